@@ -1,0 +1,84 @@
+#include "Args.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "pipeline/core/Error.h"
+
+namespace hlod::cli {
+
+Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& valueOptions,
+           const std::set<std::string>& switches) {
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        const std::string& a = argv[i];
+        if (a.size() < 2 || a[0] != '-' || a == "-") {
+            positionals_.push_back(a);
+            continue;
+        }
+        std::string name = a;
+        std::optional<std::string> inlineValue;
+        if (auto eq = a.find('='); eq != std::string::npos) {
+            name = a.substr(0, eq);
+            inlineValue = a.substr(eq + 1);
+        }
+        if (switches.count(name) && !inlineValue) {
+            switches_.insert(name);
+        } else if (valueOptions.count(name)) {
+            if (inlineValue) {
+                values_[name] = *inlineValue;
+            } else if (i + 1 < argv.size()) {
+                values_[name] = argv[++i];
+            } else {
+                throw Error(ErrorCode::InvalidArgument, "option " + name + " needs a value");
+            }
+        } else {
+            throw Error(ErrorCode::InvalidArgument, "unknown option " + name);
+        }
+    }
+}
+
+bool Args::has(const std::string& name) const {
+    return switches_.count(name) || values_.count(name);
+}
+
+std::optional<std::string> Args::value(const std::string& name) const {
+    auto it = values_.find(name);
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
+}
+
+std::string Args::value(const std::string& name, const std::string& fallback) const {
+    return value(name).value_or(fallback);
+}
+
+double Args::number(const std::string& name, double fallback, double lo, double hi) const {
+    auto v = value(name);
+    if (!v) return fallback;
+    double out = 0.0;
+    auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
+    if (ec != std::errc() || ptr != v->data() + v->size() || !std::isfinite(out)) {
+        throw Error(ErrorCode::InvalidArgument, name + " expects a number, got '" + *v + "'");
+    }
+    if (out < lo || out > hi) {
+        throw Error(ErrorCode::InvalidArgument, name + " must be within [" + std::to_string(lo) +
+                                                    ", " + std::to_string(hi) + "], got " + *v);
+    }
+    return out;
+}
+
+int Args::integer(const std::string& name, int fallback, int lo, int hi) const {
+    auto v = value(name);
+    if (!v) return fallback;
+    int out = 0;
+    auto [ptr, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
+    if (ec != std::errc() || ptr != v->data() + v->size()) {
+        throw Error(ErrorCode::InvalidArgument, name + " expects an integer, got '" + *v + "'");
+    }
+    if (out < lo || out > hi) {
+        throw Error(ErrorCode::InvalidArgument, name + " must be within [" + std::to_string(lo) +
+                                                    ", " + std::to_string(hi) + "], got " + *v);
+    }
+    return out;
+}
+
+} // namespace hlod::cli

@@ -1,0 +1,33 @@
+// Minimal command-line parsing for the `hlod` subcommands: positionals, `--name value`,
+// `--name=value` and boolean `--switch`. Unknown options are an error (a typo must not be
+// silently ignored).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace hlod::cli {
+
+class Args {
+public:
+    // `valueOptions` take a value, `switches` do not. Throws hlod::Error(InvalidArgument).
+    Args(const std::vector<std::string>& argv, const std::set<std::string>& valueOptions,
+         const std::set<std::string>& switches);
+
+    const std::vector<std::string>& positionals() const { return positionals_; }
+    bool has(const std::string& name) const;
+    std::optional<std::string> value(const std::string& name) const;
+    std::string value(const std::string& name, const std::string& fallback) const;
+    double number(const std::string& name, double fallback, double lo, double hi) const;
+    int integer(const std::string& name, int fallback, int lo, int hi) const;
+
+private:
+    std::vector<std::string> positionals_;
+    std::map<std::string, std::string> values_;
+    std::set<std::string> switches_;
+};
+
+} // namespace hlod::cli

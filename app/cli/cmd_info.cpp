@@ -1,0 +1,91 @@
+// `hlod info [SCENE...] [--json] [--deflection R]`: counts, bounds and file size of a scene.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "Args.h"
+#include "Commands.h"
+#include "SceneInput.h"
+
+namespace hlod::cli {
+
+namespace {
+
+std::string nodePath(const Scene& s, Id node) {
+    std::string path;
+    for (Id n = node; n != kNoId && n != 0; n = s.nodes[n].parent) {
+        path = "/" + s.nodes[n].name + path;
+    }
+    return path.empty() ? "/" : path;
+}
+
+nlohmann::json toJson(const LoadedScene& loaded) {
+    const Scene& s = loaded.scene;
+    const SceneStats st = s.stats();
+    const Aabb b = s.worldBounds();
+    nlohmann::json j;
+    j["inputs"] = loaded.inputs;
+    j["file_bytes"] = loaded.fileBytes;
+    j["counts"] = {{"nodes", st.nodes},           {"meshes", st.meshes},
+                   {"instances", st.instances},   {"draw_calls", st.drawCalls},
+                   {"triangles", st.triangles},   {"vertices", st.vertices},
+                   {"unique_triangles", st.uniqueTriangles},
+                   {"unique_vertices", st.uniqueVertices},
+                   {"materials", st.materials},   {"depth", st.depth}};
+    j["bounds"] = {{"min", {b.min.x, b.min.y, b.min.z}},
+                   {"max", {b.max.x, b.max.y, b.max.z}},
+                   {"size", {b.extent().x, b.extent().y, b.extent().z}},
+                   {"unit", "m"}};
+    nlohmann::json instances = nlohmann::json::array();
+    for (Id i = 0; i < s.instances.size(); ++i) {
+        const MeshInstance& inst = s.instances[i];
+        const Mesh& m = s.meshes[inst.mesh];
+        instances.push_back({{"id", i},
+                             {"name", s.nodes[inst.node].name},
+                             {"path", nodePath(s, inst.node)},
+                             {"mesh", inst.mesh},
+                             {"mesh_name", m.name},
+                             {"material", s.materials[m.material].name},
+                             {"triangles", m.triangleCount()}});
+    }
+    j["instances"] = std::move(instances);
+    return j;
+}
+
+void printText(const LoadedScene& loaded) {
+    const Scene& s = loaded.scene;
+    const SceneStats st = s.stats();
+    const Aabb b = s.worldBounds();
+    std::printf("scene:      ");
+    for (const auto& in : loaded.inputs) std::printf("%s ", in.c_str());
+    std::printf("\nfile size:  %.2f MiB\n", static_cast<double>(loaded.fileBytes) / 1048576.0);
+    std::printf("nodes:      %zu (depth %zu)\n", st.nodes, st.depth);
+    std::printf("meshes:     %zu unique, %zu instances (%zu draw calls)\n", st.meshes,
+                st.instances, st.drawCalls);
+    std::printf("triangles:  %zu (%zu unique)\n", st.triangles, st.uniqueTriangles);
+    std::printf("vertices:   %zu (%zu unique)\n", st.vertices, st.uniqueVertices);
+    std::printf("materials:  %zu\n", st.materials);
+    std::printf("bounds:     [%.3f, %.3f, %.3f] .. [%.3f, %.3f, %.3f] m\n", b.min.x, b.min.y,
+                b.min.z, b.max.x, b.max.y, b.max.z);
+    const glm::dvec3 e = b.extent();
+    std::printf("size:       %.3f x %.3f x %.3f m\n", e.x, e.y, e.z);
+}
+
+} // namespace
+
+int runInfo(const CommandArgs& argv) {
+    const Args args(argv, {"--deflection"}, {"--json"});
+    ImportOptions options;
+    options.cadRelativeDeflection = args.number("--deflection", options.cadRelativeDeflection,
+                                                1e-6, 0.5);
+    const LoadedScene loaded = loadSceneArgs(args.positionals(), options);
+    if (args.has("--json")) {
+        std::cout << toJson(loaded).dump(2) << "\n";
+    } else {
+        printText(loaded);
+    }
+    return 0;
+}
+
+} // namespace hlod::cli

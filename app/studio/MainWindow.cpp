@@ -1,0 +1,395 @@
+// The editor's main window (see MainWindow.h).
+#include "MainWindow.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTimer>
+#include <QTreeView>
+#include <QWindow>
+#include <vtkVersion.h>
+
+#include "pipeline/io/Import.h"
+#include "widgets/LogView.h"
+#include "widgets/SceneActors.h"
+#include "widgets/SceneLoader.h"
+#include "widgets/SceneTreeModel.h"
+#include "widgets/Viewport.h"
+
+using hlod::widgets::LoadedScene;
+
+namespace {
+
+QString sceneName(const QStringList& files) {
+    if (files.isEmpty())
+        return QCoreApplication::translate("MainWindow", "Sample scene");
+    return RecentScenes::label(files);
+}
+
+QString seconds(double s) { return QLocale().toString(s, 'f', 2); }
+
+} // namespace
+
+MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
+    : QMainWindow(parent), glProblem_(glProblem) {
+    setWindowIcon(QIcon(QStringLiteral(":/icons/hlod-studio.png")));
+    setAcceptDrops(true);
+    setObjectName(QStringLiteral("MainWindow"));
+
+    if (glProblem_.isEmpty()) {
+        viewport_ = new hlod::widgets::Viewport(this);
+        connect(viewport_, &hlod::widgets::Viewport::frameRendered, this,
+                &MainWindow::onFrameRendered);
+        setCentralWidget(viewport_);
+    } else {
+        auto* message = new QLabel(glProblem_, this);
+        message->setWordWrap(true);
+        message->setAlignment(Qt::AlignCenter);
+        message->setMargin(32);
+        setCentralWidget(message);
+    }
+
+    loader_ = new hlod::widgets::SceneLoader(this);
+    connect(loader_, &hlod::widgets::SceneLoader::started, this, &MainWindow::onLoadStarted);
+    connect(loader_, &hlod::widgets::SceneLoader::progressed, this, &MainWindow::onLoadProgress);
+    connect(loader_, &hlod::widgets::SceneLoader::loaded, this, &MainWindow::onLoaded);
+    connect(loader_, &hlod::widgets::SceneLoader::failed, this, &MainWindow::onLoadFailed);
+
+    createDocks();
+    createActions();
+    createStatusBar();
+    updateTitle();
+    updateCounts();
+    resize(1280, 800);
+
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (viewport_)
+        connect(viewport_, &hlod::widgets::Viewport::glFailed, log_,
+                [this](const QString& m) { log_->error(m); });
+    if (!glProblem_.isEmpty())
+        log_->error(glProblem_);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open…"), this, &MainWindow::openDialog);
+    open->setShortcut(QKeySequence::Open);
+    open->setStatusTip(tr("Open one or more scene files (several files form one scene)"));
+    QAction* folder = file->addAction(tr("Open &Folder…"), this, &MainWindow::openFolderDialog);
+    folder->setStatusTip(tr("Open every loadable file in a folder as one scene"));
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addAction(tr("Open &Sample Scene"), this, [this] { openFiles({}); });
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    viewMenu_ = menuBar()->addMenu(tr("&View"));
+    QAction* fit = viewMenu_->addAction(tr("&Fit View"));
+    fit->setShortcut(QKeySequence(Qt::Key_F));
+    fit->setStatusTip(tr("Show the whole scene"));
+    QAction* reset = viewMenu_->addAction(tr("&Reset View"));
+    reset->setShortcut(QKeySequence(Qt::Key_Home));
+    reset->setStatusTip(tr("Look at the whole scene from the front, right and above"));
+    if (viewport_) {
+        connect(fit, &QAction::triggered, viewport_, &hlod::widgets::Viewport::fitView);
+        connect(reset, &QAction::triggered, viewport_, &hlod::widgets::Viewport::resetView);
+    } else {
+        fit->setEnabled(false);
+        reset->setEnabled(false);
+    }
+    viewMenu_->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        viewMenu_->addAction(dock->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About HLOD Studio"), this, &MainWindow::showAbout);
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::createDocks() {
+    treeModel_ = new hlod::widgets::SceneTreeModel(this);
+    tree_ = new QTreeView;
+    tree_->setModel(treeModel_);
+    tree_->setUniformRowHeights(true); // thousands of rows (TORCS) scroll smoothly
+    tree_->setAlternatingRowColors(true);
+    tree_->header()->setStretchLastSection(false);
+    tree_->header()->setSectionResizeMode(hlod::widgets::SceneTreeModel::NameColumn,
+                                          QHeaderView::Stretch);
+    tree_->header()->setSectionResizeMode(hlod::widgets::SceneTreeModel::MeshesColumn,
+                                          QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(hlod::widgets::SceneTreeModel::TrianglesColumn,
+                                          QHeaderView::ResizeToContents);
+    auto* sceneDock = new QDockWidget(tr("Scene"), this);
+    sceneDock->setObjectName(QStringLiteral("SceneDock"));
+    sceneDock->setWidget(tree_);
+    addDockWidget(Qt::LeftDockWidgetArea, sceneDock);
+
+    log_ = new hlod::widgets::LogView;
+    auto* logDock = new QDockWidget(tr("Log"), this);
+    logDock->setObjectName(QStringLiteral("LogDock"));
+    logDock->setWidget(log_);
+    addDockWidget(Qt::BottomDockWidgetArea, logDock);
+    resizeDocks({sceneDock}, {320}, Qt::Horizontal);
+    resizeDocks({logDock}, {130}, Qt::Vertical);
+}
+
+void MainWindow::createStatusBar() {
+    busyLabel_ = new QLabel;
+    busyBar_ = new QProgressBar;
+    busyBar_->setMaximumWidth(160);
+    busyBar_->setTextVisible(false);
+    counts_ = new QLabel;
+    statusBar()->addWidget(busyLabel_);
+    statusBar()->addWidget(busyBar_);
+    statusBar()->addPermanentWidget(counts_);
+    setBusy(false);
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QList<QStringList>& entries = recent_.entries();
+    for (int i = 0; i < entries.size(); ++i) {
+        const QStringList files = entries[i];
+        QAction* action = recentMenu_->addAction(
+            QStringLiteral("&%1 %2").arg(i + 1).arg(RecentScenes::label(files)),
+            this, [this, files] { openFiles(files); });
+        action->setToolTip(files.join(QLatin1Char('\n')));
+        action->setStatusTip(files.join(QStringLiteral(", ")));
+    }
+    if (!entries.isEmpty()) {
+        recentMenu_->addSeparator();
+        recentMenu_->addAction(tr("&Clear List"), this, [this] {
+            recent_.clear();
+            rebuildRecentMenu();
+        });
+    }
+    recentMenu_->setEnabled(!entries.isEmpty());
+}
+
+void MainWindow::openFiles(const QStringList& files) {
+    QStringList absolute;
+    for (const QString& file : files)
+        absolute << QFileInfo(file).absoluteFilePath();
+    loader_->load(absolute);
+}
+
+void MainWindow::openDialog() {
+    QStringList patterns;
+    for (const std::string& pattern : hlod::loadablePatterns())
+        patterns << QString::fromStdString(pattern);
+    const QString filter = tr("Scenes (%1)").arg(patterns.join(QLatin1Char(' '))) +
+                           QStringLiteral(";;") + tr("All files (*)");
+    const QString dir =
+        sceneFiles_.isEmpty() ? QDir::homePath() : QFileInfo(sceneFiles_.front()).absolutePath();
+    const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open Scene"), dir, filter);
+    if (!files.isEmpty())
+        openFiles(files);
+}
+
+void MainWindow::openFolderDialog() {
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open Folder as Scene"));
+    if (!dir.isEmpty())
+        openFiles({dir});
+}
+
+void MainWindow::showAbout() {
+    const QString gl = viewport_ && viewport_->glAvailable() ? tr("OpenGL: available")
+                                                             : tr("OpenGL: not available");
+    QMessageBox::about(
+        this, tr("About HLOD Studio"),
+        tr("<h3>HLOD Studio %1</h3>"
+           "<p>Builds Hierarchical Level-of-Detail for 3D scenes: clusters of meshes with "
+           "simplified proxies, exported as 3D Tiles for any engine.</p>"
+           "<p>Qt %2, VTK %3. %4</p>")
+            .arg(QStringLiteral(HLOD_VERSION), QString::fromLatin1(qVersion()),
+                 QString::fromLatin1(vtkVersion::GetVTKVersion()), gl));
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    const bool local = !urls.isEmpty() &&
+                       std::all_of(urls.begin(), urls.end(), [](const QUrl& u) { return u.isLocalFile(); });
+    if (local)
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    QStringList files;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile())
+            files << url.toLocalFile();
+    if (files.isEmpty())
+        return;
+    event->acceptProposedAction();
+    openFiles(files);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    loader_->cancel();
+    if (writeSettings_) {
+        QSettings settings;
+        settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("window/state"), saveState());
+    }
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::setBusy(bool busy, const QString& text) {
+    busyLabel_->setText(text);
+    busyLabel_->setVisible(busy);
+    busyBar_->setVisible(busy);
+    busyBar_->setRange(0, 0); // indeterminate until the importer reports a total
+    if (busy)
+        QApplication::setOverrideCursor(Qt::BusyCursor);
+    else
+        while (QApplication::overrideCursor())
+            QApplication::restoreOverrideCursor();
+}
+
+void MainWindow::onLoadStarted(const QStringList& files) {
+    setBusy(false);
+    setBusy(true, tr("Loading %1…").arg(sceneName(files)));
+    log_->info(files.isEmpty() ? tr("Opening the sample scene")
+                               : tr("Opening %1").arg(files.join(QStringLiteral(", "))));
+}
+
+void MainWindow::onLoadProgress(const QString& stage, qint64 done, qint64 total) {
+    if (total > 0) {
+        // QProgressBar takes int: scale large totals (triangle counts) to per mille.
+        busyBar_->setRange(0, 1000);
+        busyBar_->setValue(static_cast<int>(1000.0 * static_cast<double>(done) / total));
+    }
+    if (!stage.isEmpty())
+        busyBar_->setToolTip(stage);
+}
+
+void MainWindow::onLoaded(const LoadedScene& result) {
+    setBusy(false);
+    scene_ = result.scene;
+    sceneFiles_ = result.files;
+    treeModel_->setScene(scene_);
+    tree_->expandToDepth(0);
+    if (viewport_) {
+        firstFramePending_ = true;
+        shownAt_ = std::chrono::steady_clock::now();
+        viewport_->setSceneActors(result.actors, hlod::widgets::suggestedUpAxis(*scene_));
+    }
+    const hlod::SceneStats stats = scene_->stats();
+    const QLocale locale;
+    log_->info(tr("Loaded %1: %2 instances, %3 triangles, %4 materials (import %5 s, render "
+                  "data %6 s, %7)")
+                   .arg(sceneName(result.files))
+                   .arg(locale.toString(static_cast<qulonglong>(stats.instances)))
+                   .arg(locale.toString(static_cast<qulonglong>(stats.triangles)))
+                   .arg(locale.toString(static_cast<qulonglong>(stats.materials)))
+                   .arg(seconds(result.importSeconds), seconds(result.buildSeconds))
+                   .arg(result.actors->merged() ? tr("merged per material")
+                                                : tr("one actor per instance")));
+    if (!result.files.isEmpty() && writeSettings_) {
+        recent_.add(result.files);
+        rebuildRecentMenu();
+    }
+    updateTitle();
+    updateCounts();
+    if (!screenshotPath_.isEmpty())
+        QTimer::singleShot(0, this, [this] { takeScreenshot(100); });
+}
+
+void MainWindow::onLoadFailed(const QStringList& files, const QString& message) {
+    setBusy(false);
+    log_->error(message);
+    if (!screenshotPath_.isEmpty()) {
+        exitScreenshotMode(1, message);
+        return;
+    }
+    QMessageBox::warning(this, tr("Could not open %1").arg(sceneName(files)), message);
+}
+
+void MainWindow::onFrameRendered() {
+    if (!firstFramePending_)
+        return;
+    firstFramePending_ = false;
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - shownAt_)
+            .count();
+    log_->info(tr("First frame in %1 ms").arg(QLocale().toString(ms, 'f', 0)));
+}
+
+void MainWindow::updateTitle() {
+    const QString app = tr("HLOD Studio");
+    setWindowTitle(scene_ ? tr("%1 — %2").arg(sceneName(sceneFiles_), app) : app);
+}
+
+void MainWindow::updateCounts() {
+    if (!scene_) {
+        counts_->setText(tr("No scene"));
+        return;
+    }
+    const hlod::SceneStats stats = scene_->stats();
+    const QLocale locale;
+    counts_->setText(tr("Instances: %1   Triangles: %2   Materials: %3")
+                         .arg(locale.toString(static_cast<qulonglong>(stats.instances)))
+                         .arg(locale.toString(static_cast<qulonglong>(stats.triangles)))
+                         .arg(locale.toString(static_cast<qulonglong>(stats.materials))));
+}
+
+void MainWindow::requestScreenshot(const QString& path, bool viewportOnly) {
+    screenshotPath_ = path;
+    screenshotViewportOnly_ = viewportOnly;
+    writeSettings_ = false;
+}
+
+void MainWindow::takeScreenshot(int attemptsLeft) {
+    // The window must be mapped and laid out before a grab means anything; poll briefly.
+    const bool exposed = windowHandle() && windowHandle()->isExposed();
+    if (!exposed && attemptsLeft > 0) {
+        QTimer::singleShot(50, this, [this, attemptsLeft] { takeScreenshot(attemptsLeft - 1); });
+        return;
+    }
+    if (!viewport_) {
+        exitScreenshotMode(1, glProblem_);
+        return;
+    }
+    // grabFrame() renders the current scene synchronously, so the image is up to date.
+    QImage image = viewport_->grabFrame();
+    if (!screenshotViewportOnly_)
+        image = grab().toImage();
+    if (image.isNull()) {
+        exitScreenshotMode(1, tr("%1: nothing was rendered").arg(screenshotPath_));
+        return;
+    }
+    if (!image.save(screenshotPath_)) {
+        exitScreenshotMode(1, tr("%1: could not write the image").arg(screenshotPath_));
+        return;
+    }
+    exitScreenshotMode(0, {});
+}
+
+void MainWindow::exitScreenshotMode(int code, const QString& message) {
+    if (!message.isEmpty())
+        std::fprintf(stderr, "hlod-studio: %s\n", message.toLocal8Bit().constData());
+    QCoreApplication::exit(code);
+}

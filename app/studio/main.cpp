@@ -1,0 +1,127 @@
+// hlod-studio: the HLOD Studio editor. Sets up OpenGL, translations and the command line, probes
+// for an OpenGL 3.2 context before any window exists, then opens the main window.
+//
+//   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH]
+//
+// With no file the embedded sample scene opens. --screenshot waits until the scene is loaded
+// and rendered, saves the window (or only the 3D view) and exits: 0 on success, 1 when loading
+// or saving fails, 2 when OpenGL is unavailable or the arguments are wrong.
+#include <cstdio>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QRegularExpression>
+#include <QSurfaceFormat>
+#include <QTranslator>
+
+#include "MainWindow.h"
+#include "widgets/GlSupport.h"
+
+namespace {
+
+void installTranslators(QApplication& app) {
+    // Swedish is the one translation we ship; Qt's own strings (dialog buttons) come from the
+    // system's Qt translations when installed.
+    const QLocale locale;
+    if (locale.language() != QLocale::Swedish)
+        return;
+    auto* qt = new QTranslator(&app);
+    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(qt);
+    auto* ours = new QTranslator(&app);
+    if (ours->load(QStringLiteral(":/translations/hlod-studio_sv.qm")))
+        QApplication::installTranslator(ours);
+}
+
+struct Options {
+    QStringList files;
+    QString screenshot;
+    bool viewportOnly = false;
+    QSize size;
+};
+
+// Returns false (after printing why) on bad arguments.
+bool parseOptions(QApplication& app, Options& options) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "main", "HLOD Studio: build and inspect Hierarchical Level-of-Detail for 3D scenes."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(
+        QStringLiteral("files"),
+        QCoreApplication::translate("main", "Scene files or folders, opened as one scene."),
+        QStringLiteral("[FILES...]"));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("main", "Save a screenshot once loaded and rendered, then quit."),
+        QStringLiteral("OUT.png"));
+    const QCommandLineOption viewportOnly(
+        QStringLiteral("viewport-only"),
+        QCoreApplication::translate("main", "With --screenshot: save only the 3D view."));
+    const QCommandLineOption size(
+        QStringLiteral("size"), QCoreApplication::translate("main", "Window size in pixels."),
+        QStringLiteral("WxH"));
+    parser.addOptions({screenshot, viewportOnly, size});
+    parser.process(app);
+
+    options.files = parser.positionalArguments();
+    options.screenshot = parser.value(screenshot);
+    options.viewportOnly = parser.isSet(viewportOnly);
+    if (parser.isSet(size)) {
+        const auto match =
+            QRegularExpression(QStringLiteral("^(\\d+)x(\\d+)$")).match(parser.value(size));
+        if (!match.hasMatch() || match.captured(1).toInt() < 200 ||
+            match.captured(2).toInt() < 150) {
+            std::fprintf(stderr, "hlod-studio: %s\n",
+                         qPrintable(QCoreApplication::translate(
+                                        "main", "--size wants WIDTHxHEIGHT, at least 200x150, "
+                                                "not \"%1\"")
+                                        .arg(parser.value(size))));
+            return false;
+        }
+        options.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    // Must precede QApplication: every GL context Qt creates later uses this format, and
+    // sharing lets the viewport survive being moved between top-level windows.
+    QSurfaceFormat::setDefaultFormat(hlod::widgets::viewportSurfaceFormat());
+    QApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+
+    QApplication app(argc, argv);
+    Q_INIT_RESOURCE(resources); // the icons live in a static library
+    QApplication::setApplicationName(QStringLiteral("hlod-studio"));
+    QApplication::setApplicationDisplayName(QStringLiteral("HLOD Studio"));
+    QApplication::setOrganizationName(QStringLiteral("hlod"));
+    QApplication::setApplicationVersion(QStringLiteral(HLOD_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/hlod-studio.png")));
+    QApplication::setDesktopFileName(QStringLiteral("hlod-studio"));
+    installTranslators(app);
+
+    Options options;
+    if (!parseOptions(app, options))
+        return 2;
+
+    const hlod::widgets::GlProbeResult gl = hlod::widgets::probeOpenGl();
+    const QString glProblem = gl.ok ? QString() : hlod::widgets::glUnavailableMessage(gl.problem);
+    if (!gl.ok && !options.screenshot.isEmpty()) {
+        std::fprintf(stderr, "hlod-studio: %s\n", qPrintable(glProblem));
+        return 2;
+    }
+
+    MainWindow window(glProblem);
+    if (!options.screenshot.isEmpty())
+        window.requestScreenshot(options.screenshot, options.viewportOnly);
+    if (options.size.isValid())
+        window.resize(options.size);
+    window.show();
+    window.openFiles(options.files);
+    return app.exec();
+}

@@ -1,0 +1,28 @@
+// Entry point of clustering: builds a ClusterTree for a scene with one of the clusterers.
+//
+// Failure: throws Error(InvalidArgument) for parameters out of range, Error(Cancelled) when the
+// progress cancel flag is raised. Deterministic: same scene + params -> same tree.
+#pragma once
+
+#include <vector>
+
+#include "pipeline/cluster/ClusterTree.h"
+#include "pipeline/core/Progress.h"
+#include "pipeline/scene/Scene.h"
+
+namespace hlod {
+
+struct ClusterParams {
+    VolumeType volume = VolumeType::Sphere;
+    double k = 1.0;       // AABB proportion constraint exponent (thesis evaluates 0, 1, 2)
+    int maxChildren = 8;  // cap on children per inner node (>= 2)
+    // Hand-edit constraints: each group is a set of instance ids clustered as one locked unit
+    // (kept whole); excluded instances become their own leaf directly under the root.
+    std::vector<std::vector<Id>> lockedGroups;
+    std::vector<Id> excluded;
+};
+
+ClusterTree buildClusterTree(const Scene& scene, const ClusterParams& params,
+                             const Progress& progress = {});
+
+} // namespace hlod

@@ -1,0 +1,233 @@
+// Importer for every format assimp 5.2 reads (OBJ, FBX, DAE, 3DS, PLY, STL, AC3D, IFC, ...).
+//
+// Separate objects stay separate: no mesh-merging post-processing (OptimizeMeshes,
+// OptimizeGraph, PreTransformVertices) is requested. Polygons are triangulated, primitives
+// sorted by type so lines and points (AC3D line objects, for instance) are dropped, normals
+// generated where the file has none (smoothing angle 80°), identical vertices joined.
+// assimp's own ValidateDataStructure step is not used: it rejects harmless empty objects
+// (TORCS tracks have them); validateScene() checks what matters instead.
+//
+// Safety: a custom IOSystem only opens files inside the scene's folder (material libraries,
+// external textures, includes), and precheckElementCounts() refuses files whose headers
+// declare absurd sizes before assimp allocates for them.
+#include <assimp/DefaultIOSystem.h>
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <map>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/io/Import.h"
+#include "pipeline/io/Precheck.h"
+#include "pipeline/io/TextureMean.h"
+
+namespace hlod {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class FolderIOSystem : public Assimp::DefaultIOSystem {
+public:
+    explicit FolderIOSystem(fs::path folder) : folder_(std::move(folder)) {}
+    bool Exists(const char* file) const override {
+        return allowed(file) && Assimp::DefaultIOSystem::Exists(file);
+    }
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (!allowed(file)) return nullptr;
+        return Assimp::DefaultIOSystem::Open(file, mode);
+    }
+    const std::string& refused() const { return refused_; }
+
+private:
+    bool allowed(const char* file) const {
+        if (isInsideFolder(file, folder_)) return true;
+        if (refused_.empty()) refused_ = file;
+        return false;
+    }
+    fs::path folder_;
+    mutable std::string refused_;
+};
+
+glm::dmat4 toGlm(const aiMatrix4x4& m) {
+    // assimp is row-major (a1..a4 is the first row), glm is column-major.
+    return glm::dmat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3,
+                      m.a4, m.b4, m.c4, m.d4);
+}
+
+glm::vec4 embeddedTextureMean(const aiTexture* tex, glm::vec4 fallback) {
+    if (tex->mHeight == 0) { // compressed (PNG/JPEG bytes)
+        auto mean = meanColorOfImage(reinterpret_cast<const unsigned char*>(tex->pcData),
+                                     tex->mWidth);
+        return mean.value_or(fallback);
+    }
+    const std::size_t n = static_cast<std::size_t>(tex->mWidth) * tex->mHeight;
+    if (n == 0) return fallback;
+    double sum[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < n; ++i) {
+        sum[0] += tex->pcData[i].r / 255.0;
+        sum[1] += tex->pcData[i].g / 255.0;
+        sum[2] += tex->pcData[i].b / 255.0;
+        sum[3] += tex->pcData[i].a / 255.0;
+    }
+    return glm::vec4(sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n);
+}
+
+class MaterialReader {
+public:
+    MaterialReader(const aiScene* s, fs::path folder) : scene_(s), folder_(std::move(folder)) {}
+
+    Material read(const aiMaterial* m) {
+        Material mat;
+        aiString name;
+        if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
+        aiColor4D c;
+        if (m->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS ||
+            m->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
+            mat.baseColor = glm::vec4(c.r, c.g, c.b, 1.0f);
+        }
+        float opacity = 1.0f;
+        if (m->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity > 0.0f) {
+            mat.baseColor.a = std::min(opacity, 1.0f);
+        }
+        aiString path;
+        if (m->GetTexture(aiTextureType_BASE_COLOR, 0, &path) == AI_SUCCESS ||
+            m->GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS) {
+            readTexture(path.C_Str(), mat);
+        }
+        return mat;
+    }
+
+private:
+    void readTexture(const std::string& ref, Material& mat) {
+        if (ref.empty()) return;
+        mat.hasTexture = true;
+        if (const aiTexture* tex = scene_->GetEmbeddedTexture(ref.c_str())) {
+            mat.textureMean = embeddedTextureMean(tex, mat.textureMean);
+            return;
+        }
+        std::string rel = ref;
+        for (char& ch : rel) {
+            if (ch == '\\') ch = '/';
+        }
+        const fs::path p = (folder_ / rel).lexically_normal();
+        // A texture outside the scene folder is not read (no reading of arbitrary files);
+        // the material keeps its base colour.
+        if (!isInsideFolder(p, folder_)) return;
+        mat.baseColorTexture = p;
+        auto it = cache_.find(p.string());
+        if (it == cache_.end()) it = cache_.emplace(p.string(), meanColorOfImageFile(p)).first;
+        if (it->second) mat.textureMean = *it->second;
+    }
+
+    const aiScene* scene_;
+    fs::path folder_;
+    std::map<std::string, std::optional<glm::vec4>> cache_;
+};
+
+Mesh convertMesh(const aiMesh* am) {
+    Mesh mesh;
+    mesh.name = am->mName.C_Str();
+    const std::size_t n = am->mNumVertices;
+    mesh.positions.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        mesh.positions[i] = {am->mVertices[i].x, am->mVertices[i].y, am->mVertices[i].z};
+    }
+    if (am->mNormals) {
+        mesh.normals.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            glm::vec3 v(am->mNormals[i].x, am->mNormals[i].y, am->mNormals[i].z);
+            const float len = glm::length(v);
+            mesh.normals[i] = len > 0.0f && std::isfinite(len) ? v / len : glm::vec3(0, 0, 1);
+        }
+    }
+    if (am->mTextureCoords[0]) {
+        mesh.uvs.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            mesh.uvs[i] = {am->mTextureCoords[0][i].x, am->mTextureCoords[0][i].y};
+        }
+    }
+    if (am->mColors[0]) {
+        mesh.colors.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const aiColor4D& c = am->mColors[0][i];
+            mesh.colors[i] = {c.r, c.g, c.b, c.a};
+        }
+    }
+    mesh.indices.reserve(static_cast<std::size_t>(am->mNumFaces) * 3);
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+        const aiFace& face = am->mFaces[f];
+        if (face.mNumIndices != 3) continue; // points/lines left after SortByPType
+        mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + 3);
+    }
+    return mesh;
+}
+
+void importNodes(const aiScene* as, const std::vector<Id>& meshIds, Scene& scene) {
+    std::vector<std::pair<const aiNode*, Id>> stack{{as->mRootNode, 0}};
+    std::size_t guard = 0;
+    while (!stack.empty()) {
+        auto [an, parent] = stack.back();
+        stack.pop_back();
+        if (++guard > 50'000'000) break; // malformed graphs cannot loop forever
+        const std::string name = an->mName.length ? an->mName.C_Str() : "node";
+        const Id id = scene.addNode(name, parent, toGlm(an->mTransformation));
+        for (unsigned i = 0; i < an->mNumMeshes; ++i) {
+            const unsigned m = an->mMeshes[i];
+            if (m < meshIds.size() && meshIds[m] != kNoId) scene.addInstance(meshIds[m], id);
+        }
+        for (unsigned c = an->mNumChildren; c-- > 0;) stack.push_back({an->mChildren[c], id});
+    }
+}
+
+} // namespace
+
+Scene importAssimp(const fs::path& file, const ImportOptions& options) {
+    precheckElementCounts(file, options.maxElements);
+    const fs::path folder = fs::absolute(file).parent_path();
+    Assimp::Importer importer;
+    auto* io = new FolderIOSystem(folder); // owned by the importer
+    importer.SetIOHandler(io);
+    importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType |
+                           aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices;
+    const aiScene* as = nullptr;
+    try {
+        as = importer.ReadFile(fs::absolute(file).string(), flags);
+    } catch (const std::exception& e) {
+        throw Error(ErrorCode::Malformed, file, std::string("assimp failed: ") + e.what());
+    }
+    if (!io->refused().empty()) {
+        throw Error(ErrorCode::UnsafePath, file,
+                    "refers to '" + io->refused() + "' outside the scene's folder");
+    }
+    if (!as || !as->mRootNode) {
+        std::string why = importer.GetErrorString();
+        if (why.empty()) why = "unreadable or unsupported content";
+        throw Error(ErrorCode::Malformed, file, why);
+    }
+    Scene scene;
+    scene.sourceFiles.push_back(file);
+    MaterialReader materials(as, folder);
+    std::vector<Id> materialIds;
+    for (unsigned i = 0; i < as->mNumMaterials; ++i) {
+        materialIds.push_back(scene.addMaterial(materials.read(as->mMaterials[i])));
+    }
+    std::vector<Id> meshIds(as->mNumMeshes, kNoId);
+    for (unsigned i = 0; i < as->mNumMeshes; ++i) {
+        Mesh mesh = convertMesh(as->mMeshes[i]);
+        if (mesh.indices.empty()) continue;
+        const unsigned mat = as->mMeshes[i]->mMaterialIndex;
+        mesh.material = mat < materialIds.size() ? materialIds[mat] : 0;
+        meshIds[i] = scene.addMesh(std::move(mesh));
+    }
+    importNodes(as, meshIds, scene);
+    validateScene(scene, file);
+    return scene;
+}
+
+} // namespace hlod

@@ -1,0 +1,269 @@
+// glTF 2.0 importer (.gltf / .glb) on tinygltf 2.7, following the glTF 2.0 specification
+// (Khronos): node hierarchy with TRS or matrix transforms, every primitive of a mesh becomes
+// one hlod::Mesh (one material each), all index component types, non-indexed primitives,
+// triangle strips and fans. Points and lines carry no surface and are skipped.
+//
+// Safety: tinygltf accepts some broken files silently, so every accessor is bounds-checked
+// against its buffer view and buffer here, counts are capped before allocating, external
+// URIs must stay inside the scene's folder (our own file-system callbacks refuse the rest),
+// and the result goes through validateScene().
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/io/GltfAccessor.h"
+#include "pipeline/io/Import.h"
+#include "pipeline/io/TextureMean.h"
+
+namespace hlod {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct LoadContext {
+    fs::path file;
+    fs::path folder;
+    std::string refused; // first external path refused, for the error message
+    std::map<int, glm::vec4> imageMeans;
+    std::map<int, std::string> imageUris;
+};
+
+bool fileExists(const std::string& path, void* user) {
+    auto* ctx = static_cast<LoadContext*>(user);
+    if (!isInsideFolder(path, ctx->folder)) {
+        if (ctx->refused.empty()) ctx->refused = path;
+        return false;
+    }
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
+std::string expandPath(const std::string& path, void*) { return path; }
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                   void* user) {
+    auto* ctx = static_cast<LoadContext*>(user);
+    if (!isInsideFolder(path, ctx->folder)) {
+        if (ctx->refused.empty()) ctx->refused = path;
+        if (err) *err += "refused to read '" + path + "' outside the scene folder\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in) {
+        if (err) *err += "cannot open '" + path + "'\n";
+        return false;
+    }
+    const std::streamsize size = in.tellg();
+    if (size < 0 || size > (std::streamsize(1) << 32)) {
+        if (err) *err += "'" + path + "' is too large\n";
+        return false;
+    }
+    in.seekg(0);
+    out->resize(static_cast<std::size_t>(size));
+    in.read(reinterpret_cast<char*>(out->data()), size);
+    return static_cast<bool>(in);
+}
+
+bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                    void*) {
+    if (err) *err += "the importer never writes files\n";
+    return false;
+}
+
+// Images are not kept: only their mean colour (for proxies) and their URI (for export).
+bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+               const unsigned char* bytes, int size, void* user) {
+    auto* ctx = static_cast<LoadContext*>(user);
+    if (auto mean = meanColorOfImage(bytes, static_cast<std::size_t>(size))) {
+        ctx->imageMeans[index] = *mean;
+    }
+    ctx->imageUris[index] = image->uri;
+    image->image.clear();
+    return true; // an undecodable texture must not fail the whole scene: the mean stays white
+}
+
+glm::dmat4 nodeTransform(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());
+    glm::dmat4 m(1.0);
+    if (n.translation.size() == 3) {
+        m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (n.rotation.size() == 4) {
+        const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+        m = m * glm::mat4_cast(glm::normalize(q));
+    }
+    if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+    return m;
+}
+
+void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file) {
+    static const std::set<std::string> supported{
+        "KHR_materials_unlit",        "KHR_texture_transform",     "KHR_materials_emissive_strength",
+        "KHR_materials_ior",          "KHR_materials_specular",    "KHR_materials_transmission",
+        "KHR_materials_volume",       "KHR_materials_clearcoat",   "KHR_materials_sheen",
+        "KHR_materials_pbrSpecularGlossiness", "KHR_mesh_quantization"};
+    for (const std::string& ext : model.extensionsRequired) {
+        if (!supported.count(ext)) {
+            throw Error(ErrorCode::Malformed, file,
+                        "requires glTF extension " + ext + ", which HLOD Studio does not decode");
+        }
+    }
+}
+
+std::vector<Id> importMaterials(const tinygltf::Model& model, const LoadContext& ctx,
+                                Scene& scene) {
+    std::vector<Id> ids;
+    for (const tinygltf::Material& m : model.materials) {
+        Material mat;
+        mat.name = m.name;
+        const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+        if (f.size() == 4) mat.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
+        const int tex = m.pbrMetallicRoughness.baseColorTexture.index;
+        if (tex >= 0 && tex < static_cast<int>(model.textures.size())) {
+            const int img = model.textures[static_cast<std::size_t>(tex)].source;
+            if (img >= 0 && img < static_cast<int>(model.images.size())) {
+                mat.hasTexture = true;
+                if (auto it = ctx.imageMeans.find(img); it != ctx.imageMeans.end()) {
+                    mat.textureMean = it->second;
+                }
+                const std::string& uri = model.images[static_cast<std::size_t>(img)].uri;
+                if (!uri.empty() && uri.rfind("data:", 0) != 0) {
+                    mat.baseColorTexture = fs::absolute(ctx.folder / uri).lexically_normal();
+                }
+            }
+        }
+        ids.push_back(scene.addMaterial(std::move(mat)));
+    }
+    return ids;
+}
+
+// Each glTF mesh maps to the hlod meshes of its triangle primitives.
+std::vector<std::vector<Id>> importMeshes(const tinygltf::Model& model,
+                                          const std::vector<Id>& materials,
+                                          const ImportOptions& options, const fs::path& file,
+                                          Scene& scene) {
+    std::vector<std::vector<Id>> out(model.meshes.size());
+    GltfAccessorReader reader(model, file, options.maxElements);
+    for (std::size_t mi = 0; mi < model.meshes.size(); ++mi) {
+        const tinygltf::Mesh& gm = model.meshes[mi];
+        for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+            const tinygltf::Primitive& prim = gm.primitives[pi];
+            std::optional<Mesh> mesh = reader.readPrimitive(prim);
+            if (!mesh) continue; // points or lines
+            mesh->name = gm.primitives.size() > 1 ? gm.name + "#" + std::to_string(pi) : gm.name;
+            if (prim.material >= 0) {
+                if (prim.material >= static_cast<int>(materials.size())) {
+                    throw Error(ErrorCode::Malformed, file,
+                                "mesh " + std::to_string(mi) + " uses material " +
+                                    std::to_string(prim.material) + ", which does not exist");
+                }
+                mesh->material = materials[static_cast<std::size_t>(prim.material)];
+            }
+            out[mi].push_back(scene.addMesh(std::move(*mesh)));
+        }
+    }
+    return out;
+}
+
+void importNodes(const tinygltf::Model& model, const std::vector<std::vector<Id>>& meshes,
+                 const fs::path& file, Scene& scene) {
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        const int s = model.defaultScene >= 0 &&
+                              model.defaultScene < static_cast<int>(model.scenes.size())
+                          ? model.defaultScene
+                          : 0;
+        roots = model.scenes[static_cast<std::size_t>(s)].nodes;
+    } else {
+        std::vector<char> isChild(model.nodes.size(), 0);
+        for (const auto& n : model.nodes) {
+            for (int c : n.children) {
+                if (c >= 0 && c < static_cast<int>(isChild.size())) isChild[c] = 1;
+            }
+        }
+        for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+            if (!isChild[i]) roots.push_back(static_cast<int>(i));
+        }
+    }
+    std::vector<char> visited(model.nodes.size(), 0);
+    std::vector<std::pair<int, Id>> stack; // (gltf node, hlod parent)
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, 0});
+    while (!stack.empty()) {
+        auto [gi, parent] = stack.back();
+        stack.pop_back();
+        if (gi < 0 || gi >= static_cast<int>(model.nodes.size())) {
+            throw Error(ErrorCode::Malformed, file,
+                        "node index " + std::to_string(gi) + " out of range");
+        }
+        if (visited[static_cast<std::size_t>(gi)]) {
+            throw Error(ErrorCode::Malformed, file,
+                        "node " + std::to_string(gi) +
+                            " is reached twice (a cycle or a node with two parents)");
+        }
+        visited[static_cast<std::size_t>(gi)] = 1;
+        const tinygltf::Node& gn = model.nodes[static_cast<std::size_t>(gi)];
+        const std::string name = gn.name.empty() ? "node" + std::to_string(gi) : gn.name;
+        const Id id = scene.addNode(name, parent, nodeTransform(gn));
+        if (gn.mesh >= static_cast<int>(meshes.size())) {
+            throw Error(ErrorCode::Malformed, file,
+                        "node " + std::to_string(gi) + " uses mesh " + std::to_string(gn.mesh) +
+                            ", which does not exist");
+        }
+        if (gn.mesh >= 0) {
+            for (Id m : meshes[static_cast<std::size_t>(gn.mesh)]) scene.addInstance(m, id);
+        }
+        for (auto c = gn.children.rbegin(); c != gn.children.rend(); ++c) {
+            stack.push_back({*c, id});
+        }
+    }
+}
+
+} // namespace
+
+Scene importGltf(const fs::path& file, const ImportOptions& options) {
+    LoadContext ctx;
+    ctx.file = file;
+    ctx.folder = fs::absolute(file).parent_path();
+    tinygltf::TinyGLTF loader;
+    tinygltf::FsCallbacks fsCallbacks{&fileExists, &expandPath, &readWholeFile, &writeWholeFile,
+                                      &ctx};
+    loader.SetFsCallbacks(fsCallbacks);
+    loader.SetImageLoader(&loadImage, &ctx);
+    tinygltf::Model model;
+    std::string err, warn;
+    const std::string path = fs::absolute(file).string();
+    std::string ext = file.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    bool ok = false;
+    try {
+        ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        throw Error(ErrorCode::Malformed, file, std::string("glTF parse failed: ") + e.what());
+    }
+    if (!ctx.refused.empty()) {
+        throw Error(ErrorCode::UnsafePath, file,
+                    "refers to '" + ctx.refused + "' outside the scene's folder");
+    }
+    if (!ok) {
+        if (err.empty()) err = "unknown tinygltf error";
+        throw Error(ErrorCode::Malformed, file, "not a valid glTF: " + err);
+    }
+    checkRequiredExtensions(model, file);
+    Scene scene;
+    scene.sourceFiles.push_back(file);
+    const std::vector<Id> materials = importMaterials(model, ctx, scene);
+    const auto meshes = importMeshes(model, materials, options, file, scene);
+    importNodes(model, meshes, file, scene);
+    validateScene(scene, file);
+    return scene;
+}
+
+} // namespace hlod

@@ -1,0 +1,41 @@
+// The geometry of one proxy (thesis 5.3: "a simplified stand-in mesh for a whole subtree") and
+// the proxy methods that produce it.
+//
+// Units: metres. Positions are stored relative to `origin` (world space, double) so a proxy of a
+// small cluster far from the world origin keeps full float precision.
+// Colours are linear RGBA quantised to 8 bits: they replace the materials of the meshes the
+// proxy stands in for (base colour times texture mean times vertex colour).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace hlod {
+
+struct ProxyMesh {
+    glm::dvec3 origin{0.0};
+    std::vector<glm::vec3> positions;  // relative to origin
+    std::vector<glm::vec3> normals;    // empty, or one per position
+    std::vector<glm::u8vec4> colors;   // one per position (linear RGBA, 255 = 1.0)
+    std::vector<std::uint32_t> indices; // 3 per triangle, counter-clockwise = front
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    std::size_t vertexCount() const { return positions.size(); }
+    bool empty() const { return indices.empty(); }
+};
+
+// How an inner node's proxy is made from its children (see DecimateProxy.h, RemeshProxy.h,
+// SloppyProxy.h for what each guarantees).
+enum class ProxyMethod { Decimate, Remesh, Sloppy };
+
+const char* toString(ProxyMethod method);
+// Parses "decimate", "remesh", "sloppy"; throws Error(InvalidArgument) otherwise.
+ProxyMethod proxyMethodFromString(const std::string& text);
+
+// Linear float colour -> 8-bit (clamped to [0,1], rounded).
+glm::u8vec4 quantizeColor(const glm::vec4& linear);
+
+} // namespace hlod

@@ -1,0 +1,142 @@
+// Grid welding with an open-addressing hash table (linear probing), see Weld.h.
+#include "pipeline/proxy/Weld.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace hlod {
+
+namespace {
+
+constexpr std::uint32_t kUnset = 0xffffffffu;
+
+struct CellKey {
+    std::int64_t x, y, z;
+    std::uint32_t color;
+    bool operator==(const CellKey& o) const {
+        return x == o.x && y == o.y && z == o.z && color == o.color;
+    }
+};
+
+std::uint64_t mix(std::uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    return h;
+}
+
+std::uint64_t hashKey(const CellKey& k) {
+    std::uint64_t h = mix(static_cast<std::uint64_t>(k.x) * 0x9E3779B185EBCA87ull);
+    h = mix(h ^ (static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full));
+    h = mix(h ^ (static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull));
+    return mix(h ^ k.color);
+}
+
+std::int64_t cellOf(float v, double inverseCell) {
+    // Clamp so absurd coordinates cannot overflow the integer conversion.
+    const double q = std::floor(static_cast<double>(v) * inverseCell);
+    return static_cast<std::int64_t>(q < -4e18 ? -4e18 : (q > 4e18 ? 4e18 : q));
+}
+
+CellKey keyOf(const ProxyMesh& m, std::uint32_t v, double inverseCell) {
+    CellKey k{};
+    const glm::vec3& p = m.positions[v];
+    if (inverseCell > 0.0) {
+        k.x = cellOf(p.x, inverseCell);
+        k.y = cellOf(p.y, inverseCell);
+        k.z = cellOf(p.z, inverseCell);
+    } else {
+        // Exact welding: the float bits (with -0 folded onto +0, which compare equal).
+        const glm::vec3 q = p + glm::vec3(0.0f);
+        std::uint32_t bits[3];
+        std::memcpy(bits, &q, sizeof(bits));
+        k.x = bits[0];
+        k.y = bits[1];
+        k.z = bits[2];
+    }
+    const glm::u8vec4 c = v < m.colors.size() ? m.colors[v] : glm::u8vec4(255);
+    k.color = static_cast<std::uint32_t>(c.r) | (static_cast<std::uint32_t>(c.g) << 8) |
+              (static_cast<std::uint32_t>(c.b) << 16) | (static_cast<std::uint32_t>(c.a) << 24);
+    return k;
+}
+
+// Applies `remap` (old vertex -> new vertex, in first-use order) and drops degenerate faces.
+void rebuild(ProxyMesh& m, const std::vector<std::uint32_t>& remap,
+             const std::vector<std::uint32_t>& representative) {
+    ProxyMesh out;
+    out.origin = m.origin;
+    out.positions.reserve(representative.size());
+    out.colors.reserve(representative.size());
+    const bool hasColors = m.colors.size() == m.positions.size();
+    for (std::uint32_t v : representative) {
+        out.positions.push_back(m.positions[v]);
+        out.colors.push_back(hasColors ? m.colors[v] : glm::u8vec4(255));
+    }
+    out.indices.reserve(m.indices.size());
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        const std::uint32_t a = remap[m.indices[t]], b = remap[m.indices[t + 1]],
+                            c = remap[m.indices[t + 2]];
+        if (a == b || b == c || a == c) continue;
+        out.indices.insert(out.indices.end(), {a, b, c});
+    }
+    m = std::move(out);
+}
+
+} // namespace
+
+void weldVertices(ProxyMesh& mesh, float tolerance) {
+    const std::size_t n = mesh.positions.size();
+    if (n == 0) return;
+    const double inverseCell = tolerance > 0.0f ? 1.0 / static_cast<double>(tolerance) : 0.0;
+    std::size_t buckets = 16;
+    while (buckets < 2 * n) buckets *= 2;
+    std::vector<std::uint32_t> table(buckets, kUnset);
+    std::vector<CellKey> keys;
+    std::vector<std::uint32_t> representative;
+    std::vector<std::uint32_t> remap(n, kUnset);
+    keys.reserve(n);
+    representative.reserve(n);
+    for (std::uint32_t v : mesh.indices) {
+        if (remap[v] != kUnset) continue;
+        const CellKey key = keyOf(mesh, v, inverseCell);
+        std::size_t slot = hashKey(key) & (buckets - 1);
+        while (table[slot] != kUnset && !(keys[table[slot]] == key)) slot = (slot + 1) & (buckets - 1);
+        if (table[slot] == kUnset) {
+            table[slot] = static_cast<std::uint32_t>(keys.size());
+            keys.push_back(key);
+            representative.push_back(v);
+        }
+        remap[v] = table[slot];
+    }
+    rebuild(mesh, remap, representative);
+}
+
+void compactMesh(ProxyMesh& mesh) {
+    // Degenerate triangles go first so their corners do not keep otherwise unused vertices.
+    std::vector<std::uint32_t> indices;
+    indices.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
+        if (a == b || b == c || a == c) continue;
+        indices.insert(indices.end(), {a, b, c});
+    }
+    mesh.indices = std::move(indices);
+    std::vector<std::uint32_t> remap(mesh.positions.size(), kUnset);
+    std::vector<std::uint32_t> representative;
+    representative.reserve(mesh.positions.size());
+    for (std::uint32_t v : mesh.indices) {
+        if (remap[v] != kUnset) continue;
+        remap[v] = static_cast<std::uint32_t>(representative.size());
+        representative.push_back(v);
+    }
+    std::vector<glm::vec3> normals;
+    const bool hasNormals = mesh.normals.size() == mesh.positions.size();
+    if (hasNormals) {
+        normals.reserve(representative.size());
+        for (std::uint32_t v : representative) normals.push_back(mesh.normals[v]);
+    }
+    rebuild(mesh, remap, representative);
+    if (hasNormals) mesh.normals = std::move(normals);
+}
+
+} // namespace hlod

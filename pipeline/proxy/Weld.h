@@ -1,0 +1,23 @@
+// Vertex welding of an aggregated proxy input: vertices whose positions fall into the same cell
+// of a grid with spacing `tolerance` and whose colours are equal become one vertex (the first
+// one in index order keeps its position). Triangles that become degenerate (two equal corners)
+// are removed and unreferenced vertices dropped.
+//
+// Why: children come from different meshes and transforms, so surfaces that touch in the scene
+// share positions only up to float rounding; welded, the quadric simplifier sees one connected
+// surface and can collapse across the former seams instead of locking them as borders.
+// Error: a vertex moves by at most tolerance * sqrt(3) (the cell diagonal).
+// tolerance == 0 welds bit-identical positions only. Normals are dropped (recomputed later).
+// Deterministic: output order follows first use in the index buffer.
+#pragma once
+
+#include "pipeline/proxy/ProxyMesh.h"
+
+namespace hlod {
+
+void weldVertices(ProxyMesh& mesh, float tolerance);
+
+// Drops triangles with two equal corners and vertices no triangle uses (keeps first-use order).
+void compactMesh(ProxyMesh& mesh);
+
+} // namespace hlod

@@ -1,0 +1,110 @@
+// The scene model every importer produces and every later stage consumes.
+//
+// Units: metres. Axes are kept as the source defines them (glTF and AC3D are Y up, CAD is
+// usually Z up); nothing is rotated on import.
+// Ownership: a Scene owns all its data by value; ids are indices into its vectors.
+// Instancing: a Mesh is geometry in its own local frame; a MeshInstance places one mesh under
+// one node (world transform = that node's world). A mesh may be instanced by several nodes.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipeline/scene/Aabb.h"
+
+namespace hlod {
+
+using Id = std::uint32_t;
+inline constexpr Id kNoId = 0xffffffffu;
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColor{1.0f};          // linear RGBA factor
+    std::filesystem::path baseColorTexture; // absolute path, empty when none or embedded
+    bool hasTexture = false;            // a base colour texture exists (file or embedded)
+    glm::vec4 textureMean{1.0f};        // mean RGBA of that texture (decoded on import)
+
+    // The colour a proxy uses for this material: base colour times the texture's mean.
+    glm::vec4 effectiveColor() const { return baseColor * textureMean; }
+};
+
+// Triangle mesh, 32-bit indices, one material. Normals are always present (computed on import
+// when the source has none); uvs and colors are either empty or one per position.
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> colors;
+    std::vector<std::uint32_t> indices; // 3 per triangle
+    Id material = 0;
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    std::size_t vertexCount() const { return positions.size(); }
+    Aabb localBounds() const;
+};
+
+struct Node {
+    std::string name;
+    Id parent = kNoId;
+    std::vector<Id> children;
+    glm::dmat4 local{1.0};
+    glm::dmat4 world{1.0}; // kept in sync by Scene::updateWorldTransforms()
+};
+
+struct MeshInstance {
+    Id mesh = 0;
+    Id node = 0;
+};
+
+struct SceneStats {
+    std::size_t nodes = 0;
+    std::size_t meshes = 0;       // unique geometry
+    std::size_t instances = 0;    // placed meshes
+    std::size_t drawCalls = 0;    // one per instance (one material per mesh)
+    std::size_t triangles = 0;    // instanced: what a renderer draws
+    std::size_t vertices = 0;     // instanced
+    std::size_t uniqueTriangles = 0;
+    std::size_t uniqueVertices = 0;
+    std::size_t materials = 0;
+    std::size_t depth = 0;        // longest root-to-node path, root = 1
+};
+
+class Scene {
+public:
+    std::vector<Node> nodes;         // nodes[0] is the root
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials; // materials[0] always exists (default grey)
+    std::vector<MeshInstance> instances;
+    std::vector<std::filesystem::path> sourceFiles;
+
+    Scene();
+
+    // Adds a node under `parent` and returns its id.
+    Id addNode(std::string name, Id parent, const glm::dmat4& local = glm::dmat4(1.0));
+    Id addMesh(Mesh mesh);
+    Id addMaterial(Material material);
+    Id addInstance(Id mesh, Id node);
+
+    // Recomputes Node::world from Node::local, root first.
+    void updateWorldTransforms();
+
+    // Merges `other` under a new child node of this scene's root named `name`.
+    void append(Scene&& other, const std::string& name);
+
+    const glm::dmat4& instanceTransform(Id instance) const {
+        return nodes[instances[instance].node].world;
+    }
+    Aabb instanceBounds(Id instance) const;
+    Aabb worldBounds() const;
+    SceneStats stats() const;
+};
+
+// Fills normals from faces (area-weighted) for a mesh that has none.
+void computeNormals(Mesh& mesh);
+
+} // namespace hlod

@@ -1,0 +1,278 @@
+// Turns an hlod::Scene into VTK actors: per-instance actors for small scenes, per-material
+// merged world-space geometry for large ones (see SceneActors.h for why).
+#include "widgets/SceneActors.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnsignedIntArray.h>
+
+#include "pipeline/io/Import.h"
+
+namespace hlod::widgets {
+
+namespace {
+
+float toSrgb(float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+unsigned char toByte(float c) { return static_cast<unsigned char>(std::lround(c * 255.0f)); }
+
+// Growing arrays for one polydata; reserve() first, then append meshes.
+struct PolyBuilder {
+    vtkNew<vtkFloatArray> points;
+    vtkNew<vtkFloatArray> normals;
+    vtkNew<vtkUnsignedCharArray> colors;
+    vtkNew<vtkIdTypeArray> offsets;
+    vtkNew<vtkIdTypeArray> connectivity;
+    vtkNew<vtkUnsignedIntArray> instanceIds;
+    bool withColors = false;
+    bool withInstanceIds = false;
+    vtkIdType vertexCount = 0;
+    vtkIdType triangleCount = 0;
+
+    void reserve(vtkIdType vertices, vtkIdType triangles) {
+        points->SetNumberOfComponents(3);
+        points->SetNumberOfTuples(vertices);
+        normals->SetName("Normals");
+        normals->SetNumberOfComponents(3);
+        normals->SetNumberOfTuples(vertices);
+        if (withColors) {
+            colors->SetName("Colors");
+            colors->SetNumberOfComponents(3);
+            colors->SetNumberOfTuples(vertices);
+        }
+        offsets->SetNumberOfTuples(triangles + 1);
+        connectivity->SetNumberOfTuples(triangles * 3);
+        if (withInstanceIds) {
+            instanceIds->SetName(SceneActors::kInstanceIdArray);
+            instanceIds->SetNumberOfTuples(triangles);
+        }
+    }
+
+    // Appends `mesh` transformed by `world` (identity for per-mesh data). `fallback` colours the
+    // vertices of meshes without vertex colours when the builder stores colours.
+    void append(const Mesh& mesh, const glm::dmat4& world, const glm::vec4& fallback,
+                Id instance) {
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        float* p = points->GetPointer(vertexCount * 3);
+        float* n = normals->GetPointer(vertexCount * 3);
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::dvec3 wp = glm::dvec3(world * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
+            // Importers guarantee normals; a short array still must not read out of bounds.
+            const glm::dvec3 local =
+                i < mesh.normals.size() ? glm::dvec3(mesh.normals[i]) : glm::dvec3(0, 0, 1);
+            glm::dvec3 wn = normalMatrix * local;
+            const double length = glm::length(wn);
+            wn = length > 0.0 ? wn / length : glm::dvec3(0.0, 0.0, 1.0);
+            for (int c = 0; c < 3; ++c) {
+                p[3 * i + c] = static_cast<float>(wp[c]);
+                n[3 * i + c] = static_cast<float>(wn[c]);
+            }
+        }
+        if (withColors) {
+            unsigned char* rgb = colors->GetPointer(vertexCount * 3);
+            for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+                const glm::vec4 c =
+                    i < mesh.colors.size() ? linearToDisplay(mesh.colors[i]) : fallback;
+                for (int k = 0; k < 3; ++k)
+                    rgb[3 * i + k] = toByte(c[k]);
+            }
+        }
+        vtkIdType* off = offsets->GetPointer(0);
+        vtkIdType* conn = connectivity->GetPointer(0);
+        const std::size_t triangles = mesh.triangleCount();
+        for (std::size_t t = 0; t < triangles; ++t) {
+            const vtkIdType cell = triangleCount + static_cast<vtkIdType>(t);
+            off[cell] = cell * 3;
+            for (int k = 0; k < 3; ++k)
+                conn[cell * 3 + k] = vertexCount + mesh.indices[3 * t + k];
+            if (withInstanceIds)
+                instanceIds->SetValue(cell, instance);
+        }
+        vertexCount += static_cast<vtkIdType>(mesh.positions.size());
+        triangleCount += static_cast<vtkIdType>(triangles);
+    }
+
+    vtkSmartPointer<vtkPolyData> finish() {
+        offsets->SetValue(triangleCount, triangleCount * 3);
+        auto poly = vtkSmartPointer<vtkPolyData>::New();
+        vtkNew<vtkPoints> pts;
+        pts->SetData(points);
+        poly->SetPoints(pts);
+        vtkNew<vtkCellArray> cells;
+        cells->SetData(offsets, connectivity);
+        poly->SetPolys(cells);
+        poly->GetPointData()->SetNormals(normals);
+        if (withColors)
+            poly->GetPointData()->SetScalars(colors);
+        // Added, not made active: the mapper must not colour by instance id.
+        if (withInstanceIds)
+            poly->GetCellData()->AddArray(instanceIds);
+        return poly;
+    }
+};
+
+vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
+    auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            matrix->SetElement(row, col, m[col][row]); // glm is column-major
+    return matrix;
+}
+
+void applyLook(vtkActor& actor, const ScenePart& part) {
+    vtkProperty* property = actor.GetProperty();
+    property->SetColor(part.color.r, part.color.g, part.color.b);
+    property->SetOpacity(std::clamp(static_cast<double>(part.color.a), 0.05, 1.0));
+    property->SetInterpolationToPhong();
+    property->SetAmbient(0.12);
+    property->SetDiffuse(0.85);
+    property->SetSpecular(0.12);
+    property->SetSpecularPower(24.0);
+}
+
+} // namespace
+
+glm::vec4 linearToDisplay(const glm::vec4& linear) {
+    return {toSrgb(linear.r), toSrgb(linear.g), toSrgb(linear.b), std::clamp(linear.a, 0.0f, 1.0f)};
+}
+
+int suggestedUpAxis(const Scene& scene) {
+    if (scene.sourceFiles.empty())
+        return 1;
+    const bool allCad = std::all_of(scene.sourceFiles.begin(), scene.sourceFiles.end(),
+                                    [](const auto& f) { return formatForPath(f) == SceneFormat::Cad; });
+    return allCad ? 2 : 1;
+}
+
+std::shared_ptr<SceneActors> SceneActors::build(const Scene& scene,
+                                                const SceneActorsOptions& options) {
+    auto result = std::shared_ptr<SceneActors>(new SceneActors());
+    result->instanceCount_ = scene.instances.size();
+    result->merged_ = scene.instances.size() > options.mergeAbove;
+    if (result->merged_)
+        result->buildMerged(scene);
+    else
+        result->buildPerInstance(scene);
+
+    Aabb box;
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        box.expand(scene.instanceBounds(i));
+        result->triangleCount_ += scene.meshes[scene.instances[i].mesh].triangleCount();
+    }
+    if (!box.empty())
+        result->bounds_ = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
+    return result;
+}
+
+void SceneActors::buildPerInstance(const Scene& scene) {
+    std::vector<vtkSmartPointer<vtkPolyData>> meshData(scene.meshes.size());
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        const MeshInstance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes[instance.mesh];
+        if (mesh.triangleCount() == 0)
+            continue;
+        if (!meshData[instance.mesh]) {
+            PolyBuilder builder;
+            builder.withColors = !mesh.colors.empty();
+            builder.reserve(static_cast<vtkIdType>(mesh.vertexCount()),
+                            static_cast<vtkIdType>(mesh.triangleCount()));
+            builder.append(mesh, glm::dmat4(1.0), glm::vec4(1.0f), instance.mesh);
+            meshData[instance.mesh] = builder.finish();
+        }
+        ScenePart part;
+        part.polyData = meshData[instance.mesh];
+        part.transform = scene.instanceTransform(i);
+        part.material = mesh.material < scene.materials.size() ? mesh.material : 0;
+        part.instance = i;
+        part.color = linearToDisplay(scene.materials[part.material].baseColor);
+        part.vertexColors = !mesh.colors.empty();
+        parts_.push_back(std::move(part));
+    }
+}
+
+void SceneActors::buildMerged(const Scene& scene) {
+    // Group instances by material: counts first, so every array is allocated once.
+    struct Group {
+        std::vector<Id> instances;
+        vtkIdType vertices = 0;
+        vtkIdType triangles = 0;
+        bool anyColors = false;
+    };
+    std::vector<Group> groups(scene.materials.size());
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
+        const Id material = mesh.material < scene.materials.size() ? mesh.material : 0;
+        Group& group = groups[material];
+        group.instances.push_back(i);
+        group.vertices += static_cast<vtkIdType>(mesh.vertexCount());
+        group.triangles += static_cast<vtkIdType>(mesh.triangleCount());
+        group.anyColors = group.anyColors || !mesh.colors.empty();
+    }
+    for (Id material = 0; material < groups.size(); ++material) {
+        const Group& group = groups[material];
+        if (group.triangles == 0)
+            continue;
+        const glm::vec4 color = linearToDisplay(scene.materials[material].baseColor);
+        PolyBuilder builder;
+        builder.withColors = group.anyColors;
+        builder.withInstanceIds = true;
+        builder.reserve(group.vertices, group.triangles);
+        for (Id i : group.instances)
+            builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
+                           color, i);
+        ScenePart part;
+        part.polyData = builder.finish();
+        part.material = material;
+        part.color = color;
+        part.vertexColors = group.anyColors;
+        parts_.push_back(std::move(part));
+    }
+}
+
+const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
+    if (!actors_.empty() || parts_.empty())
+        return actors_;
+    actors_.reserve(parts_.size());
+    for (const ScenePart& part : parts_) {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(part.polyData);
+        mapper->SetScalarVisibility(part.vertexColors);
+        mapper->SetColorModeToDirectScalars();
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        if (part.transform != glm::dmat4(1.0))
+            actor->SetUserMatrix(toVtk(part.transform));
+        applyLook(*actor, part);
+        actors_.push_back(actor);
+    }
+    return actors_;
+}
+
+Id SceneActors::instanceOf(std::size_t part, vtkIdType cell) const {
+    if (part >= parts_.size() || cell < 0)
+        return kNoId;
+    const ScenePart& p = parts_[part];
+    if (cell >= p.polyData->GetNumberOfCells())
+        return kNoId;
+    if (p.instance != kNoId)
+        return p.instance;
+    auto* ids = vtkUnsignedIntArray::SafeDownCast(
+        p.polyData->GetCellData()->GetArray(kInstanceIdArray));
+    return ids ? ids->GetValue(cell) : kNoId;
+}
+
+} // namespace hlod::widgets
