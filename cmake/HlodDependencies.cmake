@@ -26,7 +26,8 @@ if(HLOD_BUILD_GUI)
   find_package(MPI COMPONENTS C)
   find_package(VTK 9.1 REQUIRED COMPONENTS CommonCore CommonDataModel CommonColor
                FiltersSources FiltersCore FiltersGeneral InteractionStyle RenderingCore
-               RenderingOpenGL2 RenderingAnnotation IOImage)
+               RenderingOpenGL2 RenderingAnnotation RenderingFreeType RenderingContextOpenGL2
+               IOImage)
 endif()
 
 if(HLOD_BUILD_TESTS)

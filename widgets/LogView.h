@@ -20,7 +20,7 @@ public:
 
     int errorCount() const { return errors_; }
 
-signals:
+Q_SIGNALS:
     void errorLogged(const QString& message);
 
 private:

@@ -28,6 +28,9 @@ float toSrgb(float c) {
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
+// Below this alpha a material is drawn translucent.
+constexpr float kOpaqueAlpha = 0.99f;
+
 unsigned char toByte(float c) { return static_cast<unsigned char>(std::lround(c * 255.0f)); }
 
 // Growing arrays for one polydata; reserve() first, then append meshes.
@@ -39,6 +42,7 @@ struct PolyBuilder {
     vtkNew<vtkIdTypeArray> connectivity;
     vtkNew<vtkUnsignedIntArray> instanceIds;
     bool withColors = false;
+    int colorComponents = 3; // 4 carries the material's opacity per vertex
     bool withInstanceIds = false;
     vtkIdType vertexCount = 0;
     vtkIdType triangleCount = 0;
@@ -51,7 +55,7 @@ struct PolyBuilder {
         normals->SetNumberOfTuples(vertices);
         if (withColors) {
             colors->SetName("Colors");
-            colors->SetNumberOfComponents(3);
+            colors->SetNumberOfComponents(colorComponents);
             colors->SetNumberOfTuples(vertices);
         }
         offsets->SetNumberOfTuples(triangles + 1);
@@ -83,12 +87,13 @@ struct PolyBuilder {
             }
         }
         if (withColors) {
-            unsigned char* rgb = colors->GetPointer(vertexCount * 3);
+            const int channels = colorComponents;
+            unsigned char* rgb = colors->GetPointer(vertexCount * channels);
             for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
                 const glm::vec4 c =
                     i < mesh.colors.size() ? linearToDisplay(mesh.colors[i]) : fallback;
-                for (int k = 0; k < 3; ++k)
-                    rgb[3 * i + k] = toByte(c[k]);
+                for (int k = 0; k < channels; ++k)
+                    rgb[channels * i + k] = toByte(c[k]);
             }
         }
         vtkIdType* off = offsets->GetPointer(0);
@@ -136,7 +141,8 @@ vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
 void applyLook(vtkActor& actor, const ScenePart& part) {
     vtkProperty* property = actor.GetProperty();
     property->SetColor(part.color.r, part.color.g, part.color.b);
-    property->SetOpacity(std::clamp(static_cast<double>(part.color.a), 0.05, 1.0));
+    // Fully transparent materials would vanish; keep them faintly visible.
+    property->SetOpacity(part.color.a < kOpaqueAlpha ? std::max(0.05, double(part.color.a)) : 1.0);
     property->SetInterpolationToPhong();
     property->SetAmbient(0.12);
     property->SetDiffuse(0.85);
@@ -164,7 +170,7 @@ std::shared_ptr<SceneActors> SceneActors::build(const Scene& scene,
     result->instanceCount_ = scene.instances.size();
     result->merged_ = scene.instances.size() > options.mergeAbove;
     if (result->merged_)
-        result->buildMerged(scene);
+        result->buildMerged(scene, std::max<std::size_t>(options.maxMergedParts, 1));
     else
         result->buildPerInstance(scene);
 
@@ -198,47 +204,98 @@ void SceneActors::buildPerInstance(const Scene& scene) {
         part.transform = scene.instanceTransform(i);
         part.material = mesh.material < scene.materials.size() ? mesh.material : 0;
         part.instance = i;
-        part.color = linearToDisplay(scene.materials[part.material].baseColor);
+        part.color = linearToDisplay(scene.materials[part.material].effectiveColor());
         part.vertexColors = !mesh.colors.empty();
         parts_.push_back(std::move(part));
     }
 }
 
-void SceneActors::buildMerged(const Scene& scene) {
-    // Group instances by material: counts first, so every array is allocated once.
-    struct Group {
-        std::vector<Id> instances;
-        vtkIdType vertices = 0;
-        vtkIdType triangles = 0;
-        bool anyColors = false;
-    };
-    std::vector<Group> groups(scene.materials.size());
-    for (Id i = 0; i < scene.instances.size(); ++i) {
-        const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
-        const Id material = mesh.material < scene.materials.size() ? mesh.material : 0;
-        Group& group = groups[material];
-        group.instances.push_back(i);
-        group.vertices += static_cast<vtkIdType>(mesh.vertexCount());
-        group.triangles += static_cast<vtkIdType>(mesh.triangleCount());
-        group.anyColors = group.anyColors || !mesh.colors.empty();
+namespace {
+
+// Instances that end up in one merged polydata, counted before anything is allocated.
+struct MergeGroup {
+    std::vector<Id> instances;
+    vtkIdType vertices = 0;
+    vtkIdType triangles = 0;
+    bool anyColors = false;
+
+    void add(const Scene& scene, Id instance) {
+        const Mesh& mesh = scene.meshes[scene.instances[instance].mesh];
+        instances.push_back(instance);
+        vertices += static_cast<vtkIdType>(mesh.vertexCount());
+        triangles += static_cast<vtkIdType>(mesh.triangleCount());
+        anyColors = anyColors || !mesh.colors.empty();
     }
-    for (Id material = 0; material < groups.size(); ++material) {
-        const Group& group = groups[material];
-        if (group.triangles == 0)
+};
+
+Id materialOf(const Scene& scene, Id instance) {
+    const Id material = scene.meshes[scene.instances[instance].mesh].material;
+    return material < scene.materials.size() ? material : 0;
+}
+
+// Display colour of every material, computed once.
+std::vector<glm::vec4> displayColors(const Scene& scene) {
+    std::vector<glm::vec4> colors;
+    colors.reserve(scene.materials.size());
+    for (const Material& material : scene.materials)
+        colors.push_back(linearToDisplay(material.effectiveColor()));
+    return colors;
+}
+
+} // namespace
+
+void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
+    const std::vector<glm::vec4> colors = displayColors(scene);
+    std::vector<MergeGroup> byMaterial(scene.materials.size());
+    for (Id i = 0; i < scene.instances.size(); ++i)
+        byMaterial[materialOf(scene, i)].add(scene, i);
+    const auto used = static_cast<std::size_t>(std::count_if(
+        byMaterial.begin(), byMaterial.end(), [](const MergeGroup& g) { return g.triangles > 0; }));
+
+    if (used <= maxParts) {
+        for (Id material = 0; material < byMaterial.size(); ++material) {
+            const MergeGroup& group = byMaterial[material];
+            if (group.triangles == 0)
+                continue;
+            PolyBuilder builder;
+            builder.withColors = group.anyColors;
+            builder.withInstanceIds = true;
+            builder.reserve(group.vertices, group.triangles);
+            for (Id i : group.instances)
+                builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
+                               colors[material], i);
+            ScenePart part;
+            part.polyData = builder.finish();
+            part.material = material;
+            part.color = colors[material];
+            part.vertexColors = group.anyColors;
+            parts_.push_back(std::move(part));
+        }
+        return;
+    }
+
+    // Too many materials for one actor each (TORCS has one per object): merge everything
+    // opaque into one polydata and everything translucent into another, with each material's
+    // colour (and opacity) stored per vertex.
+    MergeGroup opaque, translucent;
+    for (Id i = 0; i < scene.instances.size(); ++i)
+        (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);
+    for (MergeGroup* group : {&opaque, &translucent}) {
+        if (group->triangles == 0)
             continue;
-        const glm::vec4 color = linearToDisplay(scene.materials[material].baseColor);
         PolyBuilder builder;
-        builder.withColors = group.anyColors;
+        builder.withColors = true;
+        builder.colorComponents = group == &translucent ? 4 : 3;
         builder.withInstanceIds = true;
-        builder.reserve(group.vertices, group.triangles);
-        for (Id i : group.instances)
+        builder.reserve(group->vertices, group->triangles);
+        for (Id i : group->instances)
             builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
-                           color, i);
+                           colors[materialOf(scene, i)], i);
         ScenePart part;
         part.polyData = builder.finish();
-        part.material = material;
-        part.color = color;
-        part.vertexColors = group.anyColors;
+        part.material = kNoId;
+        part.color = glm::vec4(1.0f);
+        part.vertexColors = true;
         parts_.push_back(std::move(part));
     }
 }

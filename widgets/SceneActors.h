@@ -7,10 +7,11 @@
 //  - merged (more instances): one vtkPolyData per material with every instance's vertices
 //    transformed to world in double and stored as float. VTK's per-actor overhead makes
 //    thousands of actors slow (TORCS has ~4400 instances); tens of actors render at full speed.
-//    Each cell keeps the id of the instance it came from in the cell array "InstanceId", so
+//    With more than maxMergedParts materials, geometry is merged by opacity instead and the
+//    material colours go per vertex. Each cell keeps the id of the instance it came from in the cell array "InstanceId", so
 //    picking can map back to the scene.
 //
-// Colour: the material's base colour (linear, converted to sRGB for display since VTK does no
+// Colour: the material's effective colour (base colour times the texture's mean; linear, converted to sRGB for display since VTK does no
 // colour management); vertex colours, when a mesh has them, replace it.
 // Threading: build() creates only data objects and may run on a worker thread; actors() creates
 // the vtkActors and must run on the GUI thread.
@@ -32,13 +33,16 @@ namespace hlod::widgets {
 
 struct SceneActorsOptions {
     std::size_t mergeAbove = 500; // instance count above which geometry is merged per material
+    // Merged layout with more materials than this: one opaque and one translucent polydata,
+    // with material colours per vertex instead (a part per material would be too many actors).
+    std::size_t maxMergedParts = 64;
 };
 
 // One drawable piece of the scene.
 struct ScenePart {
     vtkSmartPointer<vtkPolyData> polyData; // shared by the parts of one mesh (per-instance layout)
     glm::dmat4 transform{1.0};             // world matrix; identity for merged parts
-    Id material = 0;
+    Id material = 0;       // kNoId when several materials share the part (colours per vertex)
     Id instance = kNoId;   // the instance drawn; kNoId for merged parts (see "InstanceId")
     glm::vec4 color{1.0f}; // display colour, sRGB, alpha = opacity
     bool vertexColors = false;
@@ -67,7 +71,7 @@ public:
 
 private:
     void buildPerInstance(const Scene& scene);
-    void buildMerged(const Scene& scene);
+    void buildMerged(const Scene& scene, std::size_t maxParts);
 
     std::vector<ScenePart> parts_;
     std::vector<vtkSmartPointer<vtkActor>> actors_;

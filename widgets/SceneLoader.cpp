@@ -56,7 +56,7 @@ void SceneLoader::load(const QStringList& files) {
     Job* raw = job.get();
     jobs_.push_back(std::move(job));
     ++running_;
-    emit started(files);
+    Q_EMIT started(files);
     raw->thread = std::thread([this, raw, files] { run(raw, files); });
 }
 
@@ -79,7 +79,7 @@ void SceneLoader::run(Job* job, QStringList files) {
         const auto total = static_cast<qint64>(info.total);
         post([this, id, stage, done, total] {
             if (id == current_)
-                emit progressed(stage, done, total);
+                Q_EMIT progressed(stage, done, total);
         });
     };
 
@@ -116,9 +116,9 @@ void SceneLoader::run(Job* job, QStringList files) {
             return;
         current_ = 0;
         if (error.isEmpty())
-            emit loaded(result);
+            Q_EMIT loaded(result);
         else
-            emit failed(files, error);
+            Q_EMIT failed(files, error);
     });
 }
 

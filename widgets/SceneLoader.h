@@ -45,7 +45,7 @@ public:
     void cancel();
     bool busy() const { return current_ != 0; }
 
-signals:
+Q_SIGNALS:
     void started(const QStringList& files);
     // `total` is 0 when unknown. Throttled to a few updates per second.
     void progressed(const QString& stage, qint64 done, qint64 total);

@@ -73,8 +73,11 @@ vtkCamera* Viewport::camera() const { return renderer_->GetActiveCamera(); }
 void Viewport::onRenderWindowEvent(vtkObject*, unsigned long event, void* callData) {
     switch (event) {
     case vtkCommand::WindowMakeCurrentEvent:
-        // VTK asks for its context outside paintGL too (releasing graphics resources).
-        if (context())
+        // VTK asks for its context often, also in the middle of a frame while one of its own
+        // framebuffers is bound. QOpenGLWidget::makeCurrent() rebinds the widget's framebuffer
+        // behind VTK's state cache (VTK would then attach its textures to Qt's framebuffer),
+        // so only switch when another context is current (releasing resources outside paintGL).
+        if (context() && QOpenGLContext::currentContext() != context())
             makeCurrent();
         break;
     case vtkCommand::WindowIsCurrentEvent:
@@ -150,6 +153,7 @@ void Viewport::paintGL() {
     // VTK caches state: re-read it so VTK blits into the widget's framebuffer.
     vtkOpenGLState* state = renderWindow_->GetState();
     state->Reset();
+    state->ResetFramebufferBindings();
     state->Push();
     renderer_->ResetCameraClippingRange();
     renderWindow_->Render();
@@ -157,7 +161,7 @@ void Viewport::paintGL() {
     clearAlpha();
     inPaint_ = false;
     ++frames_;
-    emit frameRendered();
+    Q_EMIT frameRendered();
 }
 
 void Viewport::clearAlpha() {
@@ -182,7 +186,7 @@ void Viewport::showGlProblem(const QString& detail) {
     message_->setText(glProblem_);
     message_->setGeometry(rect());
     message_->show();
-    emit glFailed(glProblem_);
+    Q_EMIT glFailed(glProblem_);
 }
 
 void Viewport::setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis, bool resetView) {

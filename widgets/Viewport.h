@@ -65,7 +65,7 @@ public:
     vtkRenderer* renderer() const;
     vtkCamera* camera() const;
 
-signals:
+Q_SIGNALS:
     void frameRendered();
     void glFailed(const QString& message);
 

@@ -5,7 +5,8 @@
 
 namespace hlod::cli {
 
-ProgressBar::ProgressBar() : tty_(isatty(STDERR_FILENO) != 0) {}
+ProgressBar::ProgressBar()
+    : tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 
@@ -21,6 +22,9 @@ void ProgressBar::draw(const ProgressInfo& info) {
     const bool stageChanged = info.stage != lastStage_;
     const bool complete = info.total > 0 && info.done >= info.total;
     const auto minGap = tty_ ? std::chrono::milliseconds(50) : std::chrono::milliseconds(1000);
+    // Plain lines only for work that lasts: a quick command (or a quick failure) keeps stderr
+    // to its one result line.
+    if (!tty_ && now - start_ < std::chrono::seconds(1)) return;
     if (!stageChanged && !complete && now - lastDraw_ < minGap) return;
     lastDraw_ = now;
     lastStage_ = info.stage;

@@ -23,6 +23,7 @@ private:
     bool tty_ = false;
     bool dirty_ = false;
     std::string lastStage_;
+    std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point lastDraw_{};
 };
 

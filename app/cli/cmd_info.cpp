@@ -27,12 +27,16 @@ nlohmann::json toJson(const LoadedScene& loaded) {
     nlohmann::json j;
     j["inputs"] = loaded.inputs;
     j["file_bytes"] = loaded.fileBytes;
-    j["counts"] = {{"nodes", st.nodes},           {"meshes", st.meshes},
-                   {"instances", st.instances},   {"draw_calls", st.drawCalls},
-                   {"triangles", st.triangles},   {"vertices", st.vertices},
+    j["counts"] = {{"nodes", st.nodes},
+                   {"meshes", st.meshes},
+                   {"instances", st.instances},
+                   {"draw_calls", st.drawCalls},
+                   {"triangles", st.triangles},
+                   {"vertices", st.vertices},
                    {"unique_triangles", st.uniqueTriangles},
                    {"unique_vertices", st.uniqueVertices},
-                   {"materials", st.materials},   {"depth", st.depth}};
+                   {"materials", st.materials},
+                   {"depth", st.depth}};
     j["bounds"] = {{"min", {b.min.x, b.min.y, b.min.z}},
                    {"max", {b.max.x, b.max.y, b.max.z}},
                    {"size", {b.extent().x, b.extent().y, b.extent().z}},
@@ -58,11 +62,12 @@ void printText(const LoadedScene& loaded) {
     const SceneStats st = s.stats();
     const Aabb b = s.worldBounds();
     std::printf("scene:      ");
-    for (const auto& in : loaded.inputs) std::printf("%s ", in.c_str());
+    for (const auto& in : loaded.inputs)
+        std::printf("%s ", in.c_str());
     std::printf("\nfile size:  %.2f MiB\n", static_cast<double>(loaded.fileBytes) / 1048576.0);
     std::printf("nodes:      %zu (depth %zu)\n", st.nodes, st.depth);
-    std::printf("meshes:     %zu unique, %zu instances (%zu draw calls)\n", st.meshes,
-                st.instances, st.drawCalls);
+    std::printf("meshes:     %zu unique, %zu instances (%zu draw calls)\n", st.meshes, st.instances,
+                st.drawCalls);
     std::printf("triangles:  %zu (%zu unique)\n", st.triangles, st.uniqueTriangles);
     std::printf("vertices:   %zu (%zu unique)\n", st.vertices, st.uniqueVertices);
     std::printf("materials:  %zu\n", st.materials);
@@ -77,8 +82,8 @@ void printText(const LoadedScene& loaded) {
 int runInfo(const CommandArgs& argv) {
     const Args args(argv, {"--deflection"}, {"--json"});
     ImportOptions options;
-    options.cadRelativeDeflection = args.number("--deflection", options.cadRelativeDeflection,
-                                                1e-6, 0.5);
+    options.cadRelativeDeflection =
+        args.number("--deflection", options.cadRelativeDeflection, 1e-6, 0.5);
     const LoadedScene loaded = loadSceneArgs(args.positionals(), options);
     if (args.has("--json")) {
         std::cout << toJson(loaded).dump(2) << "\n";

@@ -22,7 +22,8 @@ const CommandEntry kCommands[] = {
 
 void printUsage(std::FILE* out) {
     std::fprintf(out, "HLOD Studio command-line tool %s\n\nUsage:\n", HLOD_VERSION);
-    for (const CommandEntry& c : kCommands) std::fprintf(out, "  %s\n", c.usage);
+    for (const CommandEntry& c : kCommands)
+        std::fprintf(out, "  %s\n", c.usage);
     std::fprintf(out, "  hlod --version\n\nWith no SCENE, the embedded sample scene is used.\n");
 }
 
@@ -53,7 +54,6 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    std::fprintf(stderr, "hlod: error: unknown command '%s' (try hlod --help)\n",
-                 args[0].c_str());
+    std::fprintf(stderr, "hlod: error: unknown command '%s' (try hlod --help)\n", args[0].c_str());
     return 2;
 }

@@ -79,10 +79,6 @@ MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
     updateTitle();
     updateCounts();
     resize(1280, 800);
-
-    const QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     if (viewport_)
         connect(viewport_, &hlod::widgets::Viewport::glFailed, log_,
                 [this](const QString& m) { log_->error(m); });
@@ -296,6 +292,10 @@ void MainWindow::onLoaded(const LoadedScene& result) {
         firstFramePending_ = true;
         shownAt_ = std::chrono::steady_clock::now();
         viewport_->setSceneActors(result.actors, hlod::widgets::suggestedUpAxis(*scene_));
+        if (initialAzimuth_ != 0.0 || initialElevation_ != 0.0) {
+            viewport_->orbit(initialAzimuth_, initialElevation_);
+            viewport_->fitView();
+        }
     }
     const hlod::SceneStats stats = scene_->stats();
     const QLocale locale;
@@ -354,6 +354,17 @@ void MainWindow::updateCounts() {
                          .arg(locale.toString(static_cast<qulonglong>(stats.instances)))
                          .arg(locale.toString(static_cast<qulonglong>(stats.triangles)))
                          .arg(locale.toString(static_cast<qulonglong>(stats.materials))));
+}
+
+void MainWindow::restoreSettings() {
+    const QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::setInitialOrbit(double azimuth, double elevation) {
+    initialAzimuth_ = azimuth;
+    initialElevation_ = elevation;
 }
 
 void MainWindow::requestScreenshot(const QString& path, bool viewportOnly) {

@@ -41,9 +41,16 @@ public:
 
     // Opens files or folders as one scene; an empty list opens the embedded sample scene.
     void openFiles(const QStringList& files);
+    // Window geometry and dock layout of the last session (not used for screenshots, which
+    // must look the same on every machine).
+    void restoreSettings();
     // After the next load: save a screenshot to `path` (the whole window, or only the 3D view
     // when `viewportOnly`) and quit. Also stops the window from writing settings.
     void requestScreenshot(const QString& path, bool viewportOnly);
+
+    // Every scene opened from now on starts from the default view turned by these angles
+    // (degrees; see Viewport::orbit) and fitted again.
+    void setInitialOrbit(double azimuth, double elevation);
 
     hlod::widgets::Viewport* viewport() const { return viewport_; }
     const std::shared_ptr<const hlod::Scene>& scene() const { return scene_; }
@@ -95,5 +102,7 @@ private:
     QString screenshotPath_;
     bool screenshotViewportOnly_ = false;
     bool firstFramePending_ = false;
+    double initialAzimuth_ = 0.0;
+    double initialElevation_ = 0.0;
     std::chrono::steady_clock::time_point shownAt_;
 };

@@ -42,9 +42,8 @@ QString RecentScenes::label(const QStringList& files) {
     const QString first = QFileInfo(files.front()).fileName();
     if (files.size() == 1)
         return first;
-    return QCoreApplication::translate("RecentScenes", "%1 + %n more", nullptr,
-                                       static_cast<int>(files.size() - 1))
-        .arg(first);
+    const int more = static_cast<int>(files.size() - 1);
+    return QCoreApplication::translate("RecentScenes", "%1 + %n more", nullptr, more).arg(first);
 }
 
 void RecentScenes::save() const {

@@ -1,7 +1,7 @@
 // hlod-studio: the HLOD Studio editor. Sets up OpenGL, translations and the command line, probes
 // for an OpenGL 3.2 context before any window exists, then opens the main window.
 //
-//   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH]
+//   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
 //
 // With no file the embedded sample scene opens. --screenshot waits until the scene is loaded
 // and rendered, saves the window (or only the 3D view) and exits: 0 on success, 1 when loading
@@ -13,6 +13,7 @@
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QRegularExpression>
+#include <QPointF>
 #include <QSurfaceFormat>
 #include <QTranslator>
 
@@ -41,6 +42,7 @@ struct Options {
     QString screenshot;
     bool viewportOnly = false;
     QSize size;
+    QPointF orbit; // degrees added to the default view: azimuth, elevation
 };
 
 // Returns false (after printing why) on bad arguments.
@@ -64,7 +66,12 @@ bool parseOptions(QApplication& app, Options& options) {
     const QCommandLineOption size(
         QStringLiteral("size"), QCoreApplication::translate("main", "Window size in pixels."),
         QStringLiteral("WxH"));
-    parser.addOptions({screenshot, viewportOnly, size});
+    const QCommandLineOption orbit(
+        QStringLiteral("orbit"),
+        QCoreApplication::translate("main", "Turn the initial view by AZ degrees around the up "
+                                            "axis and tilt it by EL degrees, then fit."),
+        QStringLiteral("AZ,EL"));
+    parser.addOptions({screenshot, viewportOnly, size, orbit});
     parser.process(app);
 
     options.files = parser.positionalArguments();
@@ -83,6 +90,21 @@ bool parseOptions(QApplication& app, Options& options) {
             return false;
         }
         options.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    if (parser.isSet(orbit)) {
+        const QStringList parts = parser.value(orbit).split(QLatin1Char(','));
+        bool okAz = false, okEl = false;
+        const double az = parts.size() == 2 ? parts[0].toDouble(&okAz) : 0.0;
+        const double el = parts.size() == 2 ? parts[1].toDouble(&okEl) : 0.0;
+        if (!okAz || !okEl) {
+            std::fprintf(stderr, "hlod-studio: %s\n",
+                         qPrintable(QCoreApplication::translate(
+                                        "main", "--orbit wants two angles in degrees, AZ,EL, "
+                                                "not \"%1\"")
+                                        .arg(parser.value(orbit))));
+            return false;
+        }
+        options.orbit = QPointF(az, el);
     }
     return true;
 }
@@ -119,8 +141,11 @@ int main(int argc, char* argv[]) {
     MainWindow window(glProblem);
     if (!options.screenshot.isEmpty())
         window.requestScreenshot(options.screenshot, options.viewportOnly);
+    else
+        window.restoreSettings();
     if (options.size.isValid())
         window.resize(options.size);
+    window.setInitialOrbit(options.orbit.x(), options.orbit.y());
     window.show();
     window.openFiles(options.files);
     return app.exec();

@@ -12,17 +12,17 @@
 namespace hlod {
 
 enum class ErrorCode {
-    FileNotFound,     // path does not exist
-    FileUnreadable,   // exists but cannot be opened/read (permissions, a folder, I/O error)
-    UnknownFormat,    // extension/content not recognised by any importer
-    EmptyFile,        // zero bytes
-    Malformed,        // parse error, truncated data, bad JSON, out-of-range index, cycle...
-    TooLarge,         // absurd element counts, refused before allocating
-    UnsafePath,       // external reference escaping the scene folder
-    NoGeometry,       // loads, but holds no triangles
-    InvalidArgument,  // a parameter out of its declared range
-    Cancelled,        // the caller's cancel flag was raised
-    Io,               // writing output failed
+    FileNotFound,    // path does not exist
+    FileUnreadable,  // exists but cannot be opened/read (permissions, a folder, I/O error)
+    UnknownFormat,   // extension/content not recognised by any importer
+    EmptyFile,       // zero bytes
+    Malformed,       // parse error, truncated data, bad JSON, out-of-range index, cycle...
+    TooLarge,        // absurd element counts, refused before allocating
+    UnsafePath,      // external reference escaping the scene folder
+    NoGeometry,      // loads, but holds no triangles
+    InvalidArgument, // a parameter out of its declared range
+    Cancelled,       // the caller's cancel flag was raised
+    Io,              // writing output failed
 };
 
 const char* toString(ErrorCode code);

@@ -13,15 +13,15 @@
 namespace hlod {
 
 struct ProgressInfo {
-    std::string stage;    // "import", "cluster", "bake", "export", ...
+    std::string stage; // "import", "cluster", "bake", "export", ...
     std::uint64_t done = 0;
-    std::uint64_t total = 0;  // 0 when unknown
-    std::string detail;   // short free text ("baked 12, reused 3")
+    std::uint64_t total = 0; // 0 when unknown
+    std::string detail;      // short free text ("baked 12, reused 3")
 };
 
 struct Progress {
-    std::function<void(const ProgressInfo&)> report;  // may be empty
-    const std::atomic<bool>* cancel = nullptr;        // may be null
+    std::function<void(const ProgressInfo&)> report; // may be empty
+    const std::atomic<bool>* cancel = nullptr;       // may be null
 
     bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
     void throwIfCancelled() const;

@@ -32,35 +32,35 @@ namespace {
 class FolderIOSystem : public Assimp::DefaultIOSystem {
 public:
     explicit FolderIOSystem(fs::path folder) : folder_(std::move(folder)) {}
+    // Probing is harmless (loaders look for companion files): outside the folder, a file
+    // simply does not exist. Opening one is refused and reported.
     bool Exists(const char* file) const override {
-        return allowed(file) && Assimp::DefaultIOSystem::Exists(file);
+        return isInsideFolder(file, folder_) && Assimp::DefaultIOSystem::Exists(file);
     }
     Assimp::IOStream* Open(const char* file, const char* mode) override {
-        if (!allowed(file)) return nullptr;
+        if (!isInsideFolder(file, folder_)) {
+            if (refused_.empty()) refused_ = file;
+            return nullptr;
+        }
         return Assimp::DefaultIOSystem::Open(file, mode);
     }
     const std::string& refused() const { return refused_; }
 
 private:
-    bool allowed(const char* file) const {
-        if (isInsideFolder(file, folder_)) return true;
-        if (refused_.empty()) refused_ = file;
-        return false;
-    }
     fs::path folder_;
     mutable std::string refused_;
 };
 
 glm::dmat4 toGlm(const aiMatrix4x4& m) {
     // assimp is row-major (a1..a4 is the first row), glm is column-major.
-    return glm::dmat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3,
-                      m.a4, m.b4, m.c4, m.d4);
+    return glm::dmat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                      m.b4, m.c4, m.d4);
 }
 
 glm::vec4 embeddedTextureMean(const aiTexture* tex, glm::vec4 fallback) {
     if (tex->mHeight == 0) { // compressed (PNG/JPEG bytes)
-        auto mean = meanColorOfImage(reinterpret_cast<const unsigned char*>(tex->pcData),
-                                     tex->mWidth);
+        auto mean =
+            meanColorOfImage(reinterpret_cast<const unsigned char*>(tex->pcData), tex->mWidth);
         return mean.value_or(fallback);
     }
     const std::size_t n = static_cast<std::size_t>(tex->mWidth) * tex->mHeight;
@@ -174,11 +174,43 @@ void importNodes(const aiScene* as, const std::vector<Id>& meshIds, Scene& scene
         if (++guard > 50'000'000) break; // malformed graphs cannot loop forever
         const std::string name = an->mName.length ? an->mName.C_Str() : "node";
         const Id id = scene.addNode(name, parent, toGlm(an->mTransformation));
-        for (unsigned i = 0; i < an->mNumMeshes; ++i) {
+        for (unsigned i = 0; an->mMeshes && i < an->mNumMeshes; ++i) {
             const unsigned m = an->mMeshes[i];
             if (m < meshIds.size() && meshIds[m] != kNoId) scene.addInstance(meshIds[m], id);
         }
-        for (unsigned c = an->mNumChildren; c-- > 0;) stack.push_back({an->mChildren[c], id});
+        for (unsigned c = an->mNumChildren; c-- > 0;)
+            stack.push_back({an->mChildren[c], id});
+    }
+}
+
+// assimp's post-processing steps trust the loaders' output and crash on out-of-range indices
+// (seen with Quake 3 maps), so the raw scene is checked before any of them runs. This is the
+// part of assimp's ValidateDataStructure that matters, without its refusal of empty meshes.
+void checkRawScene(const aiScene* as, const fs::path& file) {
+    for (unsigned m = 0; m < as->mNumMeshes; ++m) {
+        const aiMesh* mesh = as->mMeshes ? as->mMeshes[m] : nullptr;
+        const std::string what = "mesh " + std::to_string(m);
+        if (!mesh) throw Error(ErrorCode::Malformed, file, what + " is missing");
+        if (mesh->mNumVertices > 0 && !mesh->mVertices) {
+            throw Error(ErrorCode::Malformed, file, what + " has no vertex positions");
+        }
+        if (mesh->mNumFaces > 0 && !mesh->mFaces) {
+            throw Error(ErrorCode::Malformed, file, what + " has no face list");
+        }
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices > 0 && !face.mIndices) {
+                throw Error(ErrorCode::Malformed, file, what + " has a face without indices");
+            }
+            for (unsigned i = 0; i < face.mNumIndices; ++i) {
+                if (face.mIndices[i] >= mesh->mNumVertices) {
+                    throw Error(ErrorCode::Malformed, file,
+                                what + ", face " + std::to_string(f) + ": index " +
+                                    std::to_string(face.mIndices[i]) + " out of range (" +
+                                    std::to_string(mesh->mNumVertices) + " vertices)");
+                }
+            }
+        }
     }
 }
 
@@ -192,12 +224,19 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
     importer.SetIOHandler(io);
     importer.SetPropertyBool(AI_CONFIG_FBX_CONVERT_TO_M, true);
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType |
                            aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices;
     const aiScene* as = nullptr;
     try {
-        as = importer.ReadFile(fs::absolute(file).string(), flags);
+        as = importer.ReadFile(fs::absolute(file).string(), 0);
+        if (as && as->mRootNode) {
+            checkRawScene(as, file);
+            as = importer.ApplyPostProcessing(flags);
+        }
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Malformed, file, std::string("assimp failed: ") + e.what());
     }

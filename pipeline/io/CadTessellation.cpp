@@ -61,15 +61,13 @@ void surfaceNormals(const TopoDS_Face& face, const Handle(Poly_Triangulation) & 
             store(i, tri->Normal(i).Transformed(trsf));
         return;
     }
-    if (!tri->HasUVNodes())
-        return;
+    if (!tri->HasUVNodes()) return;
     const BRepAdaptor_Surface surface(face, false);
     BRepLProp_SLProps props(surface, 1, Precision::Confusion());
     for (int i = 1; i <= tri->NbNodes(); ++i) {
         const gp_Pnt2d uv = tri->UVNode(i);
         props.SetParameters(uv.X(), uv.Y());
-        if (props.IsNormalDefined())
-            store(i, props.Normal());
+        if (props.IsNormalDefined()) store(i, props.Normal());
     }
 }
 
@@ -77,8 +75,7 @@ void surfaceNormals(const TopoDS_Face& face, const Handle(Poly_Triangulation) & 
 void appendFace(const TopoDS_Face& face, double unitScale, Mesh& mesh) {
     TopLoc_Location loc;
     const Handle(Poly_Triangulation)& tri = BRep_Tool::Triangulation(face, loc);
-    if (tri.IsNull() || tri->NbNodes() < 3 || tri->NbTriangles() < 1)
-        return;
+    if (tri.IsNull() || tri->NbNodes() < 3 || tri->NbTriangles() < 1) return;
     const gp_Trsf trsf = loc.Transformation();
     const bool reversed = face.Orientation() == TopAbs_REVERSED;
     const FaceRange range{mesh.positions.size(), mesh.indices.size()};
@@ -91,13 +88,10 @@ void appendFace(const TopoDS_Face& face, double unitScale, Mesh& mesh) {
     for (int t = 1; t <= tri->NbTriangles(); ++t) {
         int a = 0, b = 0, c = 0;
         tri->Triangle(t).Get(a, b, c);
-        if (reversed)
-            std::swap(b, c);
+        if (reversed) std::swap(b, c);
         // Out-of-range or collapsed triangles come only from corrupt stored triangulations.
-        if (a < 1 || b < 1 || c < 1 || a > nodeCount || b > nodeCount || c > nodeCount)
-            continue;
-        if (a == b || b == c || a == c)
-            continue;
+        if (a < 1 || b < 1 || c < 1 || a > nodeCount || b > nodeCount || c > nodeCount) continue;
+        if (a == b || b == c || a == c) continue;
         for (int n : {a, b, c}) {
             mesh.indices.push_back(static_cast<std::uint32_t>(range.firstVertex + (n - 1)));
         }
@@ -123,8 +117,7 @@ double modelDiagonal(const TopoDS_Shape& shape) {
     try {
         Bnd_Box box;
         BRepBndLib::Add(shape, box, false);
-        if (box.IsVoid() || box.IsOpen())
-            return 0.0;
+        if (box.IsVoid() || box.IsOpen()) return 0.0;
         const double diagonal = std::sqrt(box.SquareExtent());
         return std::isfinite(diagonal) ? diagonal : 0.0;
     } catch (const Standard_Failure&) {
@@ -142,8 +135,9 @@ void clearTriangulation(const TopoDS_Shape& shape) {
 
 bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection) {
     try {
-        // In parallel: BRepMesh meshes faces concurrently with its own thread pool.
-        BRepMesh_IncrementalMesh mesher(shape, linearDeflection, false, angularDeflection, true);
+        // On the calling thread, not BRepMesh's parallel mode: a fault inside OCCT can only be
+        // turned into an error on the thread that runs the guarded call (CadCrashGuard.h).
+        BRepMesh_IncrementalMesh mesher(shape, linearDeflection, false, angularDeflection, false);
         return mesher.IsDone();
     } catch (const Standard_Failure&) {
         return false;
@@ -156,8 +150,7 @@ std::vector<ColouredMesh> extractMeshes(const TopoDS_Shape& shape, double unitSc
     std::vector<ColouredMesh> groups;
     const auto groupFor = [&groups](const std::optional<glm::vec4>& colour) -> Mesh& {
         for (ColouredMesh& g : groups) {
-            if (g.colour == colour)
-                return g.mesh;
+            if (g.colour == colour) return g.mesh;
         }
         groups.push_back(ColouredMesh{colour, Mesh{}});
         return groups.back().mesh;
@@ -166,8 +159,7 @@ std::vector<ColouredMesh> extractMeshes(const TopoDS_Shape& shape, double unitSc
         const TopoDS_Face& face = TopoDS::Face(ex.Current());
         std::optional<glm::vec4> colour = baseColour;
         if (faceColours != nullptr) {
-            if (const glm::vec4* c = faceColours->Seek(face))
-                colour = *c;
+            if (const glm::vec4* c = faceColours->Seek(face)) colour = *c;
         }
         Mesh& mesh = groupFor(colour);
         const std::size_t vertices = mesh.positions.size(), indices = mesh.indices.size();

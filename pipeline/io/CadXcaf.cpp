@@ -42,11 +42,9 @@ std::string entryOf(const TDF_Label& label) {
 // replacement character is given), or "" for none or for XCAF's generated "=>[0:1:1:n]".
 std::string labelName(const TDF_Label& label) {
     Handle(TDataStd_Name) name;
-    if (!label.FindAttribute(TDataStd_Name::GetID(), name))
-        return {};
+    if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return {};
     const std::string text = TCollection_AsciiString(name->Get()).ToCString();
-    if (text.rfind("=>[", 0) == 0)
-        return {};
+    if (text.rfind("=>[", 0) == 0) return {};
     return text;
 }
 
@@ -101,8 +99,7 @@ private:
 Scene XcafSceneBuilder::build() {
     TDF_LabelSequence free;
     shapes_->GetFreeShapes(free);
-    if (free.IsEmpty())
-        throw Error(ErrorCode::Malformed, file_, "the file holds no shape");
+    if (free.IsEmpty()) throw Error(ErrorCode::Malformed, file_, "the file holds no shape");
     // The deflection is relative to the whole model, so gather every free shape first.
     TopoDS_Compound all;
     BRep_Builder builder;
@@ -120,11 +117,9 @@ Scene XcafSceneBuilder::build() {
     const std::string stem = file_.stem().string();
     for (int i = 1; i <= free.Length(); ++i) {
         const TDF_Label& label = free.Value(i);
-        if (!visible(label))
-            continue;
+        if (!visible(label)) continue;
         std::string name = labelName(label);
-        if (name.empty())
-            name = free.Length() == 1 ? stem : stem + "_" + std::to_string(i);
+        if (name.empty()) name = free.Length() == 1 ? stem : stem + "_" + std::to_string(i);
         const Id node = scene_.addNode(name, 0);
         visit(label, node, std::nullopt, 0);
     }
@@ -155,25 +150,19 @@ void XcafSceneBuilder::addComponents(const TDF_Label& assembly, Id node,
     XCAFDoc_ShapeTool::GetComponents(assembly, components, false);
     for (const TDF_Label& component : components) {
         TDF_Label referred;
-        if (!XCAFDoc_ShapeTool::GetReferredShape(component, referred))
-            continue;
-        if (!visible(component) || !visible(referred))
-            continue;
+        if (!XCAFDoc_ShapeTool::GetReferredShape(component, referred)) continue;
+        if (!visible(component) || !visible(referred)) continue;
         std::string name = labelName(component);
-        if (name.empty())
-            name = labelName(referred);
-        if (name.empty())
-            name = entryOf(referred);
+        if (name.empty()) name = labelName(referred);
+        if (name.empty()) name = entryOf(referred);
         const glm::dmat4 local =
             toGlm(XCAFDoc_ShapeTool::GetLocation(component).Transformation(), unitScale_);
         const Id child = scene_.addNode(name, node, local);
         // Instance colour > referred shape colour > what the assembly passes down.
-        std::optional<glm::vec4> colour2 = ownColour(component);
-        if (!colour2)
-            colour2 = ownColour(referred);
-        if (!colour2)
-            colour2 = colour;
-        visit(referred, child, colour2, depth + 1);
+        std::optional<glm::vec4> placed = ownColour(component);
+        if (!placed) placed = ownColour(referred);
+        if (!placed) placed = colour;
+        visit(referred, child, placed, depth + 1);
     }
 }
 
@@ -181,8 +170,7 @@ void XcafSceneBuilder::addPart(const TDF_Label& part, Id node,
                                const std::optional<glm::vec4>& inherited) {
     // A free part (no component above it) still has its own colour to apply.
     std::optional<glm::vec4> colour = inherited;
-    if (!colour)
-        colour = ownColour(part);
+    if (!colour) colour = ownColour(part);
     for (Id mesh : partMeshes(part, colour))
         scene_.addInstance(mesh, node);
 }
@@ -193,16 +181,14 @@ const std::vector<Id>& XcafSceneBuilder::partMeshes(const TDF_Label& part,
     const PartKey key{entry, colour.has_value(),
                       colour ? std::array<float, 4>{colour->r, colour->g, colour->b, colour->a}
                              : std::array<float, 4>{}};
-    if (auto it = partMeshes_.find(key); it != partMeshes_.end())
-        return it->second;
+    if (auto it = partMeshes_.find(key); it != partMeshes_.end()) return it->second;
     const TopoDS_Shape shape = shapes_->GetShape(part);
     if (tessellated_.insert(entry).second)
         tessellate(shape, linearDeflection_, options_.cadAngularDeflection);
     const FaceColourMap faces = faceColours(part);
     std::vector<ColouredMesh> groups = extractMeshes(shape, unitScale_, colour, &faces);
     std::string name = labelName(part);
-    if (name.empty())
-        name = file_.stem().string();
+    if (name.empty()) name = file_.stem().string();
     std::vector<Id>& ids = partMeshes_[key];
     for (std::size_t g = 0; g < groups.size(); ++g) {
         Mesh& mesh = groups[g].mesh;
@@ -239,13 +225,10 @@ FaceColourMap XcafSceneBuilder::faceColours(const TDF_Label& part) const {
         for (const TDF_Label& sub : subs) {
             const std::optional<glm::vec4> colour = ownColour(sub);
             const TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(sub);
-            if (!colour || shape.IsNull())
-                continue;
-            if ((shape.ShapeType() == TopAbs_FACE) != (pass == 1))
-                continue;
+            if (!colour || shape.IsNull()) continue;
+            if ((shape.ShapeType() == TopAbs_FACE) != (pass == 1)) continue;
             for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
-                if (faces.IsBound(ex.Current()))
-                    faces.UnBind(ex.Current());
+                if (faces.IsBound(ex.Current())) faces.UnBind(ex.Current());
                 faces.Bind(ex.Current(), *colour);
             }
         }
@@ -254,11 +237,9 @@ FaceColourMap XcafSceneBuilder::faceColours(const TDF_Label& part) const {
 }
 
 Id XcafSceneBuilder::materialFor(const std::optional<glm::vec4>& colour) {
-    if (!colour)
-        return 0; // the scene's default material
+    if (!colour) return 0; // the scene's default material
     const std::array<float, 4> key{colour->r, colour->g, colour->b, colour->a};
-    if (auto it = materials_.find(key); it != materials_.end())
-        return it->second;
+    if (auto it = materials_.find(key); it != materials_.end()) return it->second;
     const Id id = scene_.addMaterial(Material{hexName(*colour), *colour, {}});
     materials_.emplace(key, id);
     return id;

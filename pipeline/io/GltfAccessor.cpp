@@ -13,13 +13,17 @@ namespace {
 std::size_t componentSize(int type) {
     switch (type) {
     case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return 1;
     case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return 2;
     case TINYGLTF_COMPONENT_TYPE_INT:
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return 4;
+    default:
+        return 0;
     }
 }
 
@@ -30,7 +34,8 @@ float readComponent(const unsigned char* p, int type, bool normalized) {
         std::memcpy(&f, p, 4);
         return f;
     }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0f : p[0];
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return normalized ? p[0] / 255.0f : p[0];
     case TINYGLTF_COMPONENT_TYPE_BYTE: {
         const auto v = static_cast<float>(static_cast<signed char>(p[0]));
         return normalized ? std::max(v / 127.0f, -1.0f) : v;
@@ -45,7 +50,8 @@ float readComponent(const unsigned char* p, int type, bool normalized) {
         std::memcpy(&v, p, 2);
         return normalized ? std::max(v / 32767.0f, -1.0f) : static_cast<float>(v);
     }
-    default: return 0.0f;
+    default:
+        return 0.0f;
     }
 }
 
@@ -108,8 +114,7 @@ std::vector<float> GltfAccessorReader::readFloats(int index, int components,
     for (std::size_t i = 0; i < a.count; ++i) {
         const unsigned char* e = base + i * stride;
         for (int c = 0; c < std::min(have, components); ++c) {
-            out[i * components + c] =
-                readComponent(e + c * csize, a.componentType, a.normalized);
+            out[i * components + c] = readComponent(e + c * csize, a.componentType, a.normalized);
         }
     }
     return out;
@@ -150,8 +155,10 @@ std::vector<std::uint32_t> toTriangleList(const std::vector<std::uint32_t>& idx,
     for (std::size_t i = 2; i < idx.size(); ++i) {
         if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
             // Alternate winding so every triangle keeps the strip's orientation.
-            if (i % 2 == 0) out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
-            else out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
+            if (i % 2 == 0)
+                out.insert(out.end(), {idx[i - 2], idx[i - 1], idx[i]});
+            else
+                out.insert(out.end(), {idx[i - 1], idx[i - 2], idx[i]});
         } else {
             out.insert(out.end(), {idx[0], idx[i - 1], idx[i]});
         }
@@ -207,7 +214,8 @@ std::optional<Mesh> GltfAccessorReader::readPrimitive(const tinygltf::Primitive&
         idx = readIndices(prim.indices);
     } else {
         idx.resize(n);
-        for (std::size_t i = 0; i < n; ++i) idx[i] = static_cast<std::uint32_t>(i);
+        for (std::size_t i = 0; i < n; ++i)
+            idx[i] = static_cast<std::uint32_t>(i);
     }
     mesh.indices = toTriangleList(idx, mode);
     for (std::uint32_t i : mesh.indices) {

@@ -28,9 +28,8 @@ private:
     std::vector<float> readFloats(int accessor, int components, const char* what) const;
     std::vector<std::uint32_t> readIndices(int accessor) const;
     // Validates the accessor and returns (pointer to first element, stride).
-    std::pair<const unsigned char*, std::size_t> locate(const tinygltf::Accessor& a,
-                                                        std::size_t elementSize,
-                                                        const std::string& what) const;
+    std::pair<const unsigned char*, std::size_t>
+    locate(const tinygltf::Accessor& a, std::size_t elementSize, const std::string& what) const;
     const tinygltf::Accessor& accessor(int index, const std::string& what) const;
 
     const tinygltf::Model& model_;

@@ -104,11 +104,17 @@ glm::dmat4 nodeTransform(const tinygltf::Node& n) {
 }
 
 void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file) {
-    static const std::set<std::string> supported{
-        "KHR_materials_unlit",        "KHR_texture_transform",     "KHR_materials_emissive_strength",
-        "KHR_materials_ior",          "KHR_materials_specular",    "KHR_materials_transmission",
-        "KHR_materials_volume",       "KHR_materials_clearcoat",   "KHR_materials_sheen",
-        "KHR_materials_pbrSpecularGlossiness", "KHR_mesh_quantization"};
+    static const std::set<std::string> supported{"KHR_materials_unlit",
+                                                 "KHR_texture_transform",
+                                                 "KHR_materials_emissive_strength",
+                                                 "KHR_materials_ior",
+                                                 "KHR_materials_specular",
+                                                 "KHR_materials_transmission",
+                                                 "KHR_materials_volume",
+                                                 "KHR_materials_clearcoat",
+                                                 "KHR_materials_sheen",
+                                                 "KHR_materials_pbrSpecularGlossiness",
+                                                 "KHR_mesh_quantization"};
     for (const std::string& ext : model.extensionsRequired) {
         if (!supported.count(ext)) {
             throw Error(ErrorCode::Malformed, file,
@@ -176,10 +182,10 @@ void importNodes(const tinygltf::Model& model, const std::vector<std::vector<Id>
                  const fs::path& file, Scene& scene) {
     std::vector<int> roots;
     if (!model.scenes.empty()) {
-        const int s = model.defaultScene >= 0 &&
-                              model.defaultScene < static_cast<int>(model.scenes.size())
-                          ? model.defaultScene
-                          : 0;
+        const int s =
+            model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size())
+                ? model.defaultScene
+                : 0;
         roots = model.scenes[static_cast<std::size_t>(s)].nodes;
     } else {
         std::vector<char> isChild(model.nodes.size(), 0);
@@ -194,7 +200,8 @@ void importNodes(const tinygltf::Model& model, const std::vector<std::vector<Id>
     }
     std::vector<char> visited(model.nodes.size(), 0);
     std::vector<std::pair<int, Id>> stack; // (gltf node, hlod parent)
-    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, 0});
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, 0});
     while (!stack.empty()) {
         auto [gi, parent] = stack.back();
         stack.pop_back();
@@ -217,7 +224,8 @@ void importNodes(const tinygltf::Model& model, const std::vector<std::vector<Id>
                             ", which does not exist");
         }
         if (gn.mesh >= 0) {
-            for (Id m : meshes[static_cast<std::size_t>(gn.mesh)]) scene.addInstance(m, id);
+            for (Id m : meshes[static_cast<std::size_t>(gn.mesh)])
+                scene.addInstance(m, id);
         }
         for (auto c = gn.children.rbegin(); c != gn.children.rend(); ++c) {
             stack.push_back({*c, id});
@@ -240,7 +248,8 @@ Scene importGltf(const fs::path& file, const ImportOptions& options) {
     std::string err, warn;
     const std::string path = fs::absolute(file).string();
     std::string ext = file.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     bool ok = false;
     try {
         ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/io/IsolatedImport.h"
 
 namespace hlod {
 
@@ -35,12 +36,13 @@ const std::set<std::string>& cadExtensions() {
 // above and minus pure animation/skeleton formats that carry no static geometry).
 const std::set<std::string>& assimpExtensions() {
     static const std::set<std::string> s{
-        ".obj", ".fbx", ".dae", ".3ds", ".ply", ".stl", ".ac", ".acc", ".ac3d", ".ifc",
-        ".ifczip", ".off", ".x", ".lwo", ".lws", ".ase", ".ask", ".dxf", ".ms3d", ".cob",
-        ".scn", ".xgl", ".zgl", ".nff", ".enff", ".raw", ".ter", ".hmp", ".mdl", ".md2",
-        ".md3", ".md5mesh", ".smd", ".vta", ".3d", ".q3o", ".q3s", ".irrmesh", ".irr",
-        ".sib", ".ogex", ".3mf", ".amf", ".x3d", ".x3db", ".wrl", ".m3d", ".csm", ".lxo",
-        ".blend", ".mesh.xml", ".iqm", ".b3d", ".bsp", ".pk3", ".ndo", ".uc", ".mot"};
+        ".obj",  ".fbx",     ".dae", ".3ds", ".ply",     ".stl",      ".ac",   ".acc", ".ac3d",
+        ".ifc",  ".ifczip",  ".off", ".x",   ".lwo",     ".lws",      ".ase",  ".ask", ".dxf",
+        ".ms3d", ".cob",     ".scn", ".xgl", ".zgl",     ".nff",      ".enff", ".raw", ".ter",
+        ".hmp",  ".mdl",     ".md2", ".md3", ".md5mesh", ".smd",      ".vta",  ".3d",  ".q3o",
+        ".q3s",  ".irrmesh", ".irr", ".sib", ".ogex",    ".3mf",      ".amf",  ".x3d", ".x3db",
+        ".wrl",  ".m3d",     ".csm", ".lxo", ".blend",   ".mesh.xml", ".iqm",  ".b3d", ".bsp",
+        ".pk3",  ".ndo",     ".uc",  ".mot"};
     return s;
 }
 
@@ -83,10 +85,15 @@ std::vector<fs::path> expandInputs(const std::vector<fs::path>& inputs) {
 Scene importOne(const fs::path& file, const ImportOptions& options) {
     checkReadableFile(file);
     switch (formatForPath(file)) {
-    case SceneFormat::Gltf: return importGltf(file, options);
-    case SceneFormat::Cad: return importCad(file, options);
-    case SceneFormat::Assimp: return importAssimp(file, options);
-    case SceneFormat::Unknown: break;
+    case SceneFormat::Gltf:
+        return importGltf(file, options);
+    case SceneFormat::Cad:
+        return importCad(file, options);
+    case SceneFormat::Assimp:
+        // assimp runs out of process: some of its readers crash on bad files.
+        return runIsolated(file, [&] { return importAssimp(file, options); });
+    case SceneFormat::Unknown:
+        break;
     }
     throw Error(ErrorCode::UnknownFormat, file,
                 "unknown file extension '" + file.extension().string() + "'");
@@ -109,7 +116,8 @@ bool isLoadableExtension(const fs::path& path) {
 std::vector<std::string> loadablePatterns() {
     std::vector<std::string> out;
     for (const auto* set : {&gltfExtensions(), &cadExtensions(), &assimpExtensions()}) {
-        for (const std::string& e : *set) out.push_back("*" + e);
+        for (const std::string& e : *set)
+            out.push_back("*" + e);
     }
     return out;
 }

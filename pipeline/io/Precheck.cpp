@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char& c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
 }
 
@@ -121,9 +122,12 @@ void precheckElementCounts(const fs::path& file, std::size_t maxElements) {
     const std::uint64_t size = fs::file_size(file, ec);
     if (ec) return;
     const std::string ext = lower(file.extension().string());
-    if (ext == ".off") precheckOff(file, size, maxElements);
-    else if (ext == ".ply") precheckPly(file, size, maxElements);
-    else if (ext == ".stl") precheckStl(file, size, maxElements);
+    if (ext == ".off")
+        precheckOff(file, size, maxElements);
+    else if (ext == ".ply")
+        precheckPly(file, size, maxElements);
+    else if (ext == ".stl")
+        precheckStl(file, size, maxElements);
 }
 
 } // namespace hlod

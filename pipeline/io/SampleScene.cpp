@@ -48,7 +48,8 @@ Scene makeSampleScene() {
     const Id farm = s.addNode("tank-farm", 0, at(-35, 0, -15));
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-            const Id t = s.addNode("tank-" + std::to_string(i * 3 + j), farm, at(i * 9.0, 0, j * 9.0));
+            const Id t =
+                s.addNode("tank-" + std::to_string(i * 3 + j), farm, at(i * 9.0, 0, j * 9.0));
             s.addInstance(tank, t);
             s.addInstance(dome, s.addNode("dome", t, at(0, 9.0, 0)));
         }

@@ -32,7 +32,8 @@ std::optional<glm::vec4> meanColorOfImage(const unsigned char* bytes, std::size_
     double sum[4] = {0, 0, 0, 0};
     std::size_t n = 0;
     for (std::size_t i = 0; i < count; i += stride, ++n) {
-        for (int c = 0; c < 3; ++c) sum[c] += srgbToLinear(px[i * 4 + c] / 255.0f);
+        for (int c = 0; c < 3; ++c)
+            sum[c] += srgbToLinear(px[i * 4 + c] / 255.0f);
         sum[3] += px[i * 4 + 3] / 255.0;
     }
     stbi_image_free(px);

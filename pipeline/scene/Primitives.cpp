@@ -65,8 +65,10 @@ Mesh makeCylinder(float radius, float height, int segments) {
         }
         for (std::uint32_t i = 0; i < s; ++i) {
             const std::uint32_t a = centre + 1 + i, b = centre + 1 + (i + 1) % s;
-            if (cap) m.indices.insert(m.indices.end(), {centre, a, b});
-            else m.indices.insert(m.indices.end(), {centre, b, a});
+            if (cap)
+                m.indices.insert(m.indices.end(), {centre, a, b});
+            else
+                m.indices.insert(m.indices.end(), {centre, b, a});
         }
     }
     return m;

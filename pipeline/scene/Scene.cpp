@@ -17,7 +17,8 @@ Aabb Aabb::transformed(const glm::dmat4& m) const {
 
 Aabb Mesh::localBounds() const {
     Aabb b;
-    for (const glm::vec3& p : positions) b.expand(glm::dvec3(p));
+    for (const glm::vec3& p : positions)
+        b.expand(glm::dvec3(p));
     return b;
 }
 
@@ -81,7 +82,8 @@ void Scene::append(Scene&& other, const std::string& name) {
         } else {
             n.parent += nodeBase;
         }
-        for (Id& c : n.children) c += nodeBase;
+        for (Id& c : n.children)
+            c += nodeBase;
         nodes.push_back(std::move(n));
     }
     nodes[0].children.push_back(nodeBase);
@@ -89,11 +91,13 @@ void Scene::append(Scene&& other, const std::string& name) {
         m.material += matBase;
         meshes.push_back(std::move(m));
     }
-    for (Material& m : other.materials) materials.push_back(std::move(m));
+    for (Material& m : other.materials)
+        materials.push_back(std::move(m));
     for (const MeshInstance& inst : other.instances) {
         instances.push_back(MeshInstance{inst.mesh + meshBase, inst.node + nodeBase});
     }
-    for (auto& f : other.sourceFiles) sourceFiles.push_back(std::move(f));
+    for (auto& f : other.sourceFiles)
+        sourceFiles.push_back(std::move(f));
     updateWorldTransforms();
 }
 
@@ -109,7 +113,8 @@ Aabb Scene::instanceBounds(Id instance) const {
 
 Aabb Scene::worldBounds() const {
     Aabb b;
-    for (Id i = 0; i < instances.size(); ++i) b.expand(instanceBounds(i));
+    for (Id i = 0; i < instances.size(); ++i)
+        b.expand(instanceBounds(i));
     return b;
 }
 
@@ -134,7 +139,8 @@ SceneStats Scene::stats() const {
         auto [id, d] = stack.back();
         stack.pop_back();
         s.depth = std::max(s.depth, d);
-        for (Id c : nodes[id].children) stack.push_back({c, d + 1});
+        for (Id c : nodes[id].children)
+            stack.push_back({c, d + 1});
     }
     return s;
 }

@@ -23,10 +23,10 @@ inline constexpr Id kNoId = 0xffffffffu;
 
 struct Material {
     std::string name;
-    glm::vec4 baseColor{1.0f};          // linear RGBA factor
+    glm::vec4 baseColor{1.0f};              // linear RGBA factor
     std::filesystem::path baseColorTexture; // absolute path, empty when none or embedded
-    bool hasTexture = false;            // a base colour texture exists (file or embedded)
-    glm::vec4 textureMean{1.0f};        // mean RGBA of that texture (decoded on import)
+    bool hasTexture = false;                // a base colour texture exists (file or embedded)
+    glm::vec4 textureMean{1.0f};            // mean RGBA of that texture (decoded on import)
 
     // The colour a proxy uses for this material: base colour times the texture's mean.
     glm::vec4 effectiveColor() const { return baseColor * textureMean; }
@@ -63,20 +63,20 @@ struct MeshInstance {
 
 struct SceneStats {
     std::size_t nodes = 0;
-    std::size_t meshes = 0;       // unique geometry
-    std::size_t instances = 0;    // placed meshes
-    std::size_t drawCalls = 0;    // one per instance (one material per mesh)
-    std::size_t triangles = 0;    // instanced: what a renderer draws
-    std::size_t vertices = 0;     // instanced
+    std::size_t meshes = 0;    // unique geometry
+    std::size_t instances = 0; // placed meshes
+    std::size_t drawCalls = 0; // one per instance (one material per mesh)
+    std::size_t triangles = 0; // instanced: what a renderer draws
+    std::size_t vertices = 0;  // instanced
     std::size_t uniqueTriangles = 0;
     std::size_t uniqueVertices = 0;
     std::size_t materials = 0;
-    std::size_t depth = 0;        // longest root-to-node path, root = 1
+    std::size_t depth = 0; // longest root-to-node path, root = 1
 };
 
 class Scene {
 public:
-    std::vector<Node> nodes;         // nodes[0] is the root
+    std::vector<Node> nodes; // nodes[0] is the root
     std::vector<Mesh> meshes;
     std::vector<Material> materials; // materials[0] always exists (default grey)
     std::vector<MeshInstance> instances;

@@ -82,7 +82,8 @@ TEST(AssimpImporter, CruiserDropsLinesAndKeepsAllTriangles) {
     EXPECT_NEAR(b.extent().x, 172.0, 2.0); // bbox 172 x 52 x 21 m in some axis order
     // Textured materials carry the texture's mean colour for proxies.
     bool textured = false;
-    for (const Material& m : s.materials) textured |= m.hasTexture && m.textureMean != glm::vec4(1.0f);
+    for (const Material& m : s.materials)
+        textured |= m.hasTexture && m.textureMean != glm::vec4(1.0f);
     EXPECT_TRUE(textured);
 }
 

@@ -45,11 +45,12 @@ std::string gltfJson(const std::string& bufferUri, std::size_t byteLength,
            R"(}],"nodes":)" + nodes + R"(,
       "meshes":[{"name":"m","primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
       "materials":[{"name":"red","pbrMetallicRoughness":{"baseColorFactor":[1,0,0,1]}}],
-      "buffers":[{"uri":")" + bufferUri + R"(","byteLength":)" + std::to_string(byteLength) + R"(}],
+      "buffers":[{"uri":")" +
+           bufferUri + R"(","byteLength":)" + std::to_string(byteLength) + R"(}],
       "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":8}],
       "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
-                   {"bufferView":1,"componentType":5123,"count":)" + std::to_string(indexCount) +
-           R"(,"type":"SCALAR"}]})";
+                   {"bufferView":1,"componentType":5123,"count":)" +
+           std::to_string(indexCount) + R"(,"type":"SCALAR"}]})";
 }
 
 std::filesystem::path writeGltf(const TempDir& dir, const std::string& json,
@@ -102,13 +103,13 @@ TEST(GltfImporter, ExternalUriEscapingTheFolderIsRefused) {
     std::filesystem::create_directories(outer / "scene");
     const auto b = triangleBuffer();
     hlod::test::writeFile(outer / "secret.bin", std::string(b.begin(), b.end()));
-    const auto file = hlod::test::writeFile(outer / "scene" / "s.gltf",
-                                            gltfJson("../secret.bin", b.size()));
+    const auto file =
+        hlod::test::writeFile(outer / "scene" / "s.gltf", gltfJson("../secret.bin", b.size()));
     std::string msg;
     EXPECT_EQ(importError(file, &msg), ErrorCode::UnsafePath);
     EXPECT_NE(msg.find("s.gltf"), std::string::npos) << msg;
-    const auto abs = hlod::test::writeFile(outer / "scene" / "a.gltf",
-                                           gltfJson("/etc/passwd", b.size()));
+    const auto abs =
+        hlod::test::writeFile(outer / "scene" / "a.gltf", gltfJson("/etc/passwd", b.size()));
     EXPECT_EQ(importError(abs), ErrorCode::UnsafePath);
 }
 
@@ -125,8 +126,9 @@ TEST(GltfImporter, AccessorReadingPastItsBufferViewIsMalformed) {
     TempDir dir;
     const auto b = triangleBuffer();
     // 5 uint16 indices need 10 bytes; the view has 8.
-    EXPECT_EQ(importError(writeGltf(dir, gltfJson(dataUri(b), b.size(), R"([{"mesh":0}])", "[0]", 5))),
-              ErrorCode::Malformed);
+    EXPECT_EQ(
+        importError(writeGltf(dir, gltfJson(dataUri(b), b.size(), R"([{"mesh":0}])", "[0]", 5))),
+        ErrorCode::Malformed);
 }
 
 TEST(GltfImporter, NodeCycleIsMalformed) {

@@ -47,7 +47,8 @@ TEST(Import, EmptyFileAndUnknownExtensionAndFolder) {
     std::string msg;
     EXPECT_EQ(codeOf({hlod::test::writeFile(dir / "zero.obj", "")}, &msg), ErrorCode::EmptyFile);
     EXPECT_NE(msg.find("zero.obj"), std::string::npos);
-    EXPECT_EQ(codeOf({hlod::test::writeFile(dir / "notes.txt", "hello")}), ErrorCode::UnknownFormat);
+    EXPECT_EQ(codeOf({hlod::test::writeFile(dir / "notes.txt", "hello")}),
+              ErrorCode::UnknownFormat);
     std::filesystem::create_directories(dir / "empty");
     EXPECT_EQ(codeOf({dir / "empty"}), ErrorCode::UnknownFormat);
 }

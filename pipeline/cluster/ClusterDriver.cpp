@@ -1,0 +1,106 @@
+// Clustering driver: leaves, constraints, one merging strategy (see ClusterDriver.h).
+#include "pipeline/cluster/ClusterDriver.h"
+
+#include <algorithm>
+#include <string>
+
+#include "pipeline/bounds/InstanceBounds.h"
+#include "pipeline/core/Error.h"
+
+namespace hlod {
+
+namespace {
+
+constexpr double kRelativeMinExtent = 1e-4;
+constexpr double kFallbackMinExtent = 1e-6;
+
+[[noreturn]] void invalid(const std::string& what) {
+    throw Error(ErrorCode::InvalidArgument, what);
+}
+
+} // namespace
+
+double clusteringMinExtent(const std::vector<Aabb>& boxes) {
+    Aabb all;
+    for (const Aabb& b : boxes) all.expand(b);
+    const double d = all.diagonal();
+    return d > 0.0 ? d * kRelativeMinExtent : kFallbackMinExtent;
+}
+
+void validateConstraints(const ClusterParams& params, std::size_t instanceCount) {
+    if (params.maxChildren < 2) invalid("max children must be at least 2");
+    if (!(params.k >= 0.0) || params.k > 1e6) invalid("k must be within [0, 1e6]");
+    // 0 = free, 1 = locked, 2 = excluded
+    std::vector<unsigned char> state(instanceCount, 0);
+    auto check = [&](Id id) {
+        if (id >= instanceCount) {
+            invalid("instance " + std::to_string(id) + " does not exist (the scene has " +
+                    std::to_string(instanceCount) + ")");
+        }
+    };
+    for (std::size_t g = 0; g < params.lockedGroups.size(); ++g) {
+        if (params.lockedGroups[g].empty()) invalid("locked group " + std::to_string(g) +
+                                                    " is empty");
+        for (Id id : params.lockedGroups[g]) {
+            check(id);
+            if (state[id] != 0) {
+                invalid("instance " + std::to_string(id) + " appears twice in the locked groups");
+            }
+            state[id] = 1;
+        }
+    }
+    for (Id id : params.excluded) {
+        check(id);
+        if (state[id] == 1) {
+            invalid("instance " + std::to_string(id) + " is both locked and excluded");
+        }
+        state[id] = 2;
+    }
+}
+
+ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params,
+                                 const CostModel& model, const UnitMerger& merge,
+                                 const Progress& progress) {
+    validateConstraints(params, scene.instances.size());
+
+    progress.emit(ProgressInfo{"bounds", 0, scene.instances.size(), ""});
+    const std::vector<InstanceBounds> bounds = computeInstanceBounds(scene, progress);
+    std::vector<Aabb> boxes;
+    boxes.reserve(bounds.size());
+    for (const InstanceBounds& b : bounds) boxes.push_back(b.box);
+    const double minExtent = clusteringMinExtent(boxes);
+
+    TreeBuilder builder(model);
+    for (Id i = 0; i < bounds.size(); ++i) {
+        builder.addLeaf(i, bounds[i].box, model.leaf(bounds[i].sphere, bounds[i].box, minExtent));
+    }
+    std::vector<char> taken(bounds.size(), 0);
+    std::vector<Id> units;
+    for (const std::vector<Id>& group : params.lockedGroups) {
+        std::vector<Id> members(group.begin(), group.end());
+        std::sort(members.begin(), members.end());
+        members.erase(std::unique(members.begin(), members.end()), members.end());
+        for (Id id : members) taken[id] = 1;
+        const Id root = merge(builder, members, params.maxChildren, progress);
+        builder.setLocked(root, true);
+        units.push_back(root);
+    }
+    std::vector<Id> excluded(params.excluded.begin(), params.excluded.end());
+    std::sort(excluded.begin(), excluded.end());
+    excluded.erase(std::unique(excluded.begin(), excluded.end()), excluded.end());
+    for (Id id : excluded) taken[id] = 1;
+    for (Id i = 0; i < bounds.size(); ++i) {
+        if (!taken[i]) units.push_back(i);
+    }
+    std::sort(units.begin(), units.end());
+
+    Id root = units.empty() ? kNoId : merge(builder, units, params.maxChildren, progress);
+    if (!excluded.empty()) {
+        std::vector<Id> top = excluded;
+        if (root != kNoId) top.push_back(root);
+        root = top.size() == 1 ? top[0] : builder.addFoldedNode(std::move(top));
+    }
+    return builder.finish(root, params.volume, params.k);
+}
+
+} // namespace hlod

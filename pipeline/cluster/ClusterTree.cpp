@@ -1,0 +1,33 @@
+// Small helpers of the cluster tree (ClusterTree.h).
+#include "pipeline/cluster/ClusterTree.h"
+
+#include "pipeline/core/Error.h"
+
+namespace hlod {
+
+const char* toString(VolumeType v) {
+    switch (v) {
+    case VolumeType::Sphere: return "sphere";
+    case VolumeType::Aabb: return "aabb";
+    case VolumeType::Octree: return "octree";
+    case VolumeType::Original: return "original";
+    }
+    return "unknown";
+}
+
+VolumeType volumeTypeFromString(const std::string& s) {
+    for (VolumeType v :
+         {VolumeType::Sphere, VolumeType::Aabb, VolumeType::Octree, VolumeType::Original}) {
+        if (s == toString(v)) return v;
+    }
+    throw Error(ErrorCode::InvalidArgument,
+                "unknown volume type '" + s + "' (expected sphere, aabb, octree or original)");
+}
+
+std::size_t ClusterTree::leafCount() const {
+    std::size_t n = 0;
+    for (const ClusterNode& node : nodes) n += node.isLeaf() ? 1 : 0;
+    return n;
+}
+
+} // namespace hlod

@@ -1,0 +1,83 @@
+// Thesis tables 6.2-6.6 style statistics, see BakeStats.h for the conventions.
+#include "pipeline/proxy/BakeStats.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace hlod {
+
+std::size_t meshBytes(std::size_t vertices, std::size_t indices, bool uvs, bool colors) {
+    const std::size_t perVertex = 12 + 12 + (uvs ? 8 : 0) + (colors ? 4 : 0);
+    const std::size_t indexBytes = vertices <= 65535 ? 2 : 4;
+    return vertices * perVertex + indices * indexBytes;
+}
+
+std::size_t meshBytes(const Mesh& mesh) {
+    return meshBytes(mesh.vertexCount(), mesh.indices.size(), !mesh.uvs.empty(),
+                     !mesh.colors.empty());
+}
+
+std::size_t meshBytes(const ProxyMesh& mesh) {
+    return meshBytes(mesh.vertexCount(), mesh.indices.size(), false, true);
+}
+
+GeometryStats originalStats(const Scene& scene) {
+    GeometryStats s;
+    s.version = "Original";
+    for (const MeshInstance& inst : scene.instances) {
+        const Mesh& m = scene.meshes[inst.mesh];
+        s.triangles += m.triangleCount();
+        s.vertices += m.vertexCount();
+        s.meshes += 1;
+        s.bytes += meshBytes(m);
+    }
+    return s;
+}
+
+GeometryStats dlodStats(const DlodSummary& summary) {
+    return GeometryStats{"DLOD chain", summary.triangles, summary.vertices, summary.meshes,
+                         summary.bytes};
+}
+
+GeometryStats hlodStats(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                        const std::string& version) {
+    GeometryStats s = originalStats(scene);
+    s.version = version;
+    for (std::size_t id = 0; id < tree.nodes.size() && id < bake.nodes.size(); ++id) {
+        if (tree.nodes[id].isLeaf()) continue;
+        const ProxyMesh& p = bake.nodes[id].proxy;
+        if (p.empty()) continue;
+        s.triangles += p.triangleCount();
+        s.vertices += p.vertexCount();
+        s.meshes += 1;
+        s.bytes += meshBytes(p);
+    }
+    return s;
+}
+
+ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeResult& bake) {
+    ProxyShare share;
+    const double original = static_cast<double>(originalStats(scene).triangles);
+    if (original <= 0.0) return share;
+    share.allProxies = static_cast<double>(bake.proxyTriangles) / original;
+    if (tree.root != kNoId && tree.root < bake.nodes.size() && !tree.nodes[tree.root].isLeaf()) {
+        share.rootProxy = static_cast<double>(bake.nodes[tree.root].proxy.triangleCount()) / original;
+    }
+    return share;
+}
+
+std::string hlodVersionName(const ClusterTree& tree) {
+    switch (tree.volume) {
+    case VolumeType::Sphere: return "HLOD, sphere";
+    case VolumeType::Aabb: {
+        char k[32];
+        std::snprintf(k, sizeof(k), "%g", tree.k);
+        return std::string("HLOD, AABB k=") + k;
+    }
+    case VolumeType::Octree: return "HLOD, octree";
+    case VolumeType::Original: return "HLOD, original hierarchy";
+    }
+    return "HLOD";
+}
+
+} // namespace hlod

@@ -1,0 +1,52 @@
+// Statistics in the shape of the thesis' tables 6.2-6.6 (Triangles, Vertices, Meshes, Space)
+// for the original scene, the DLOD chain baseline and an HLOD configuration.
+//
+// Conventions (so rows are comparable):
+// - counts are per mesh instance (a mesh placed twice counts twice), as SceneStats::triangles;
+// - an HLOD configuration holds the original meshes (its leaves) plus one proxy per inner node,
+//   so its rows are original + proxies, like the thesis' tables;
+// - space is geometry bytes as the GLB writer stores them (float positions and normals, float
+//   uvs when present, 8-bit colours when present, 16- or 32-bit indices), without JSON or
+//   textures, so it measures geometry, not file-format overhead.
+// Proxy share: the two ways to say "how big are the proxies": all proxies together relative to
+// the original triangle count (the thesis' measure: HLOD minus Original over Original, which it
+// reports as 21-60%), and the root proxy alone relative to the original.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "pipeline/cluster/ClusterTree.h"
+#include "pipeline/proxy/DlodChain.h"
+#include "pipeline/proxy/ProxyBaker.h"
+#include "pipeline/scene/Scene.h"
+
+namespace hlod {
+
+struct GeometryStats {
+    std::string version; // "Original", "DLOD chain", "HLOD, sphere", ...
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+    std::size_t meshes = 0;
+    std::size_t bytes = 0;
+};
+
+struct ProxyShare {
+    double allProxies = 0.0; // sum of proxy triangles / original triangles
+    double rootProxy = 0.0;  // root proxy triangles / original triangles
+};
+
+std::size_t meshBytes(std::size_t vertices, std::size_t indices, bool uvs, bool colors);
+std::size_t meshBytes(const Mesh& mesh);
+std::size_t meshBytes(const ProxyMesh& mesh);
+
+GeometryStats originalStats(const Scene& scene);
+GeometryStats dlodStats(const DlodSummary& summary);
+GeometryStats hlodStats(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                        const std::string& version);
+ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeResult& bake);
+
+// "HLOD, sphere", "HLOD, AABB k=1", ... as in the thesis' tables.
+std::string hlodVersionName(const ClusterTree& tree);
+
+} // namespace hlod

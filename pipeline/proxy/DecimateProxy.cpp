@@ -1,0 +1,49 @@
+// Quadric decimation proxy (Garland & Heckbert 1997 via meshoptimizer), see DecimateProxy.h.
+#include "pipeline/proxy/DecimateProxy.h"
+
+#include <meshoptimizer.h>
+
+#include "pipeline/proxy/DeviationCheck.h"
+#include "pipeline/proxy/ProxyFinish.h"
+#include "pipeline/proxy/SmallParts.h"
+#include "pipeline/proxy/Weld.h"
+
+namespace hlod {
+
+std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxError) {
+    if (mesh.indices.empty()) return {};
+    const float* positions = &mesh.positions[0].x;
+    // meshoptimizer measures error relative to the mesh's largest extent.
+    const float scale = meshopt_simplifyScale(positions, mesh.positions.size(), sizeof(glm::vec3));
+    if (!(scale > 0.0f)) return mesh.indices;
+    const float relative = static_cast<float>(maxError / static_cast<double>(scale));
+    std::vector<std::uint32_t> out(mesh.indices.size());
+    const std::size_t count = meshopt_simplify(out.data(), mesh.indices.data(), mesh.indices.size(),
+                                               positions, mesh.positions.size(), sizeof(glm::vec3),
+                                               /*target_index_count=*/0, relative, 0, nullptr);
+    out.resize(count);
+    return out;
+}
+
+std::vector<std::uint32_t> simplifyWithinError(const ProxyMesh& mesh, double maxError) {
+    // meshoptimizer's error is an RMS distance (DeviationCheck.h): ask for a fraction of the
+    // budget and back off until the sampled maximum deviation fits the whole budget.
+    for (const double fraction : {0.6, 0.4, 0.25, 0.15}) {
+        std::vector<std::uint32_t> out = simplifyToError(mesh, maxError * fraction);
+        if (out.size() == mesh.indices.size()) return out; // nothing collapsed
+        if (withinDeviation(mesh.positions, mesh.indices, out, maxError)) return out;
+    }
+    return mesh.indices;
+}
+
+ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options) {
+    const auto e = static_cast<float>(maxError);
+    weldVertices(input, e * options.weldFraction);
+    dropSmallParts(input, e);
+    input.indices = simplifyWithinError(input, maxError * options.simplifyFraction);
+    compactMesh(input);
+    finishProxy(input);
+    return input;
+}
+
+} // namespace hlod

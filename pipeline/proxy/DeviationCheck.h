@@ -1,0 +1,27 @@
+// Two-sided sampled surface deviation between a mesh and a simplified version of it that
+// indexes the same vertex array (what meshopt_simplify returns), tested against a limit.
+//
+// Why: meshoptimizer 0.18's error is an area-weighted RMS distance to the planes of the
+// collapsed triangles (its quadricError divides by the accumulated area), not a maximum; on
+// curved surfaces the real deviation reaches 1.5-3x the requested value. The proxy budget is a
+// maximum (one pixel at the switch point), so simplifications are checked with this.
+// Measure (Hausdorff distance sampled, as Metro by Cignoni et al. 1998 does): simplified ->
+// original from the corners, edge midpoints and centroids of the simplified triangles;
+// original -> simplified from every original vertex and triangle centroid. Nearest triangles
+// come from a uniform grid of cells at least 2 * limit wide, so each query reads at most
+// 2 x 2 x 2 cells and stops at the first triangle within the limit.
+// Result: true when every sample is within `limit` (metres, same frame as the positions).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include <glm/glm.hpp>
+
+namespace hlod {
+
+bool withinDeviation(std::span<const glm::vec3> positions,
+                     std::span<const std::uint32_t> original,
+                     std::span<const std::uint32_t> simplified, double limit);
+
+} // namespace hlod

@@ -1,0 +1,261 @@
+// Bottom-up parallel proxy baking with a dependency-counting TBB task graph and a Merkle-keyed
+// content cache (thesis 5.3's postfix traversal, parallel), see ProxyBaker.h.
+#include "pipeline/proxy/ProxyBaker.h"
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/proxy/Aggregate.h"
+#include "pipeline/proxy/ContentHash.h"
+#include "pipeline/proxy/ProxyCache.h"
+#include "pipeline/proxy/SloppyProxy.h"
+
+namespace hlod {
+
+namespace {
+
+// Bumped whenever a change of the proxy code changes its output, so stale caches miss.
+constexpr std::uint64_t kBakeFormatVersion = 1;
+
+// Children before parents, only nodes reachable from the root.
+std::vector<Id> postOrder(const ClusterTree& tree) {
+    std::vector<Id> order;
+    if (tree.root == kNoId) return order;
+    std::vector<std::pair<Id, bool>> stack{{tree.root, false}};
+    while (!stack.empty()) {
+        auto [id, expanded] = stack.back();
+        stack.pop_back();
+        if (expanded) {
+            order.push_back(id);
+            continue;
+        }
+        stack.push_back({id, true});
+        const auto& children = tree.nodes[id].children;
+        for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back({*it, false});
+    }
+    return order;
+}
+
+// Node boxes as the clusterer stored them; recomputed from the leaves for hand-built trees
+// that left them empty.
+std::vector<Aabb> nodeBoxes(const Scene& scene, const ClusterTree& tree,
+                            const std::vector<Id>& order) {
+    std::vector<Aabb> boxes(tree.nodes.size());
+    for (Id id : order) {
+        const ClusterNode& node = tree.nodes[id];
+        if (!node.box.empty()) {
+            boxes[id] = node.box;
+        } else if (node.isLeaf()) {
+            if (node.instance != kNoId) boxes[id] = scene.instanceBounds(node.instance);
+        } else {
+            for (Id c : node.children) boxes[id].expand(boxes[c]);
+        }
+    }
+    return boxes;
+}
+
+void hashOptions(ContentHash& h, const BakeParams& params) {
+    h.addValue(kBakeFormatVersion);
+    h.addValue(static_cast<std::uint32_t>(params.method));
+    switch (params.method) {
+    case ProxyMethod::Decimate:
+        h.addValue(params.decimate.weldFraction);
+        h.addValue(params.decimate.simplifyFraction);
+        break;
+    case ProxyMethod::Remesh:
+        h.addValue(params.remesh.voxelFraction);
+        h.addValue(params.remesh.shellVoxels);
+        h.addValue(params.remesh.adaptivity);
+        h.addValue(params.remesh.maxVoxelsPerAxis);
+        break;
+    case ProxyMethod::Sloppy: break;
+    }
+}
+
+std::uint64_t hashMesh(const Mesh& mesh) {
+    ContentHash h(0x6d657368); // "mesh"
+    h.addVector(mesh.positions);
+    h.addVector(mesh.colors);
+    h.addVector(mesh.indices);
+    return h.digest();
+}
+
+void fillFrames(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                const std::vector<Id>& order, std::vector<NodeBake>& nodes) {
+    const std::vector<Aabb> boxes = nodeBoxes(scene, tree, order);
+    for (Id id : order) {
+        NodeBake& nb = nodes[id];
+        nb.diameter = nodeDiameter(tree.nodes[id]);
+        if (!(nb.diameter > 0.0)) nb.diameter = boxes[id].diagonal();
+        nb.errorBudget = proxyErrorBudget(nb.diameter, params.screen);
+        nb.switchDistance = switchDistance(nb.diameter, params.screen);
+        nb.proxy.origin = boxes[id].empty() ? glm::dvec3(0.0) : boxes[id].center();
+    }
+}
+
+} // namespace
+
+std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree& tree,
+                                           const BakeParams& params) {
+    const std::vector<Id> order = postOrder(tree);
+    std::vector<NodeBake> frames(tree.nodes.size());
+    fillFrames(scene, tree, params, order, frames);
+    std::vector<std::uint8_t> used(scene.meshes.size(), 0);
+    for (Id id : order) {
+        const ClusterNode& n = tree.nodes[id];
+        if (n.isLeaf() && n.instance != kNoId) used[scene.instances[n.instance].mesh] = 1;
+    }
+    std::vector<std::uint64_t> meshHash(scene.meshes.size(), 0);
+    tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t m) {
+        if (used[m]) meshHash[m] = hashMesh(scene.meshes[m]);
+    });
+    std::vector<std::uint64_t> keys(tree.nodes.size(), 0);
+    for (Id id : order) {
+        const ClusterNode& node = tree.nodes[id];
+        if (node.isLeaf()) {
+            ContentHash h(0x6c656166); // "leaf"
+            if (node.instance != kNoId) {
+                const MeshInstance& inst = scene.instances[node.instance];
+                const Mesh& mesh = scene.meshes[inst.mesh];
+                const Id mat = mesh.material < scene.materials.size() ? mesh.material : 0;
+                h.addValue(meshHash[inst.mesh]);
+                h.addValue(scene.materials[mat].effectiveColor());
+                h.addValue(scene.nodes[inst.node].world);
+            }
+            keys[id] = h.digest();
+            continue;
+        }
+        ContentHash h(0x6e6f6465); // "node"
+        hashOptions(h, params);
+        h.addValue(frames[id].errorBudget);
+        h.addValue(frames[id].proxy.origin);
+        h.addValue(static_cast<std::uint64_t>(node.children.size()));
+        for (Id c : node.children) h.addValue(keys[c]);
+        keys[id] = h.digest();
+    }
+    return keys;
+}
+
+ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& params,
+                    const Progress& progress) {
+    switch (params.method) {
+    case ProxyMethod::Decimate: return decimateProxy(std::move(input), errorBudget, params.decimate);
+    case ProxyMethod::Remesh:
+        return remeshProxy(std::move(input), errorBudget, progress, params.remesh);
+    case ProxyMethod::Sloppy: return sloppyProxy(std::move(input), errorBudget);
+    }
+    return input;
+}
+
+namespace {
+
+struct BakeRun {
+    const Scene& scene;
+    const ClusterTree& tree;
+    const BakeParams& params;
+    const Progress& progress;
+    ProxyCache cache;
+    BakeResult& result;
+    std::unique_ptr<std::atomic<int>[]> pending; // inner children not yet baked, per node
+    std::atomic<std::size_t> done{0}, baked{0}, reused{0}, triangles{0};
+    tbb::task_group group;
+
+    void bakeNode(Id id) {
+        progress.throwIfCancelled();
+        const ClusterNode& node = tree.nodes[id];
+        NodeBake& nb = result.nodes[id];
+        std::vector<AggregatePart> parts;
+        parts.reserve(node.children.size());
+        for (Id c : node.children) {
+            const ClusterNode& child = tree.nodes[c];
+            if (child.isLeaf()) parts.push_back(AggregatePart{child.instance, nullptr});
+            else parts.push_back(AggregatePart{kNoId, &result.nodes[c].proxy});
+        }
+        nb.inputTriangles = aggregateTriangleCount(scene, parts);
+        const glm::dvec3 origin = nb.proxy.origin;
+        if (std::optional<ProxyMesh> cached = cache.load(nb.key)) {
+            nb.proxy = std::move(*cached);
+            nb.reused = true;
+            ++reused;
+        } else {
+            nb.proxy = makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params,
+                                 progress);
+            nb.proxy.origin = origin;
+            cache.store(nb.key, nb.proxy);
+            ++baked;
+        }
+        triangles += nb.proxy.triangleCount();
+        const std::size_t finished = ++done;
+        progress.emit(ProgressInfo{"bake", finished, result.innerNodes,
+                                   "baked " + std::to_string(baked.load()) + ", reused " +
+                                       std::to_string(reused.load()) + ", " +
+                                       std::to_string(triangles.load()) + " proxy triangles"});
+        const Id parent = node.parent;
+        if (parent != kNoId && pending[parent].fetch_sub(1, std::memory_order_acq_rel) == 1) {
+            group.run([this, parent] { bakeNode(parent); });
+        }
+    }
+};
+
+} // namespace
+
+BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                       const Progress& progress) {
+    validate(params.screen);
+    if (params.threads < 0 || params.threads > 1024) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "threads must be within [0, 1024], got " + std::to_string(params.threads));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const int threads = params.threads > 0 ? params.threads : tbb::info::default_concurrency();
+    tbb::task_arena arena(threads);
+
+    BakeResult result;
+    result.nodes.resize(tree.nodes.size());
+    const std::vector<Id> order = postOrder(tree);
+    fillFrames(scene, tree, params, order, result.nodes);
+    std::vector<std::uint64_t> keys;
+    arena.execute([&] { keys = computeBakeKeys(scene, tree, params); });
+    for (Id id : order) {
+        result.nodes[id].key = keys[id];
+        if (!tree.nodes[id].isLeaf()) ++result.innerNodes;
+    }
+
+    BakeRun run{scene, tree, params, progress, ProxyCache(params.cacheDir), result, {}};
+    run.pending = std::make_unique<std::atomic<int>[]>(tree.nodes.size());
+    std::vector<Id> ready;
+    for (Id id : order) {
+        const ClusterNode& node = tree.nodes[id];
+        if (node.isLeaf()) continue;
+        int inner = 0;
+        for (Id c : node.children) inner += tree.nodes[c].isLeaf() ? 0 : 1;
+        run.pending[id].store(inner);
+        if (inner == 0) ready.push_back(id);
+    }
+    progress.emit(ProgressInfo{"bake", 0, result.innerNodes, ""});
+    arena.execute([&] {
+        for (Id id : ready) run.group.run([&run, id] { run.bakeNode(id); });
+        run.group.wait();
+    });
+
+    result.baked = run.baked.load();
+    result.reused = run.reused.load();
+    for (Id id : order) {
+        if (tree.nodes[id].isLeaf()) continue;
+        result.inputTriangles += result.nodes[id].inputTriangles;
+        result.proxyTriangles += result.nodes[id].proxy.triangleCount();
+        result.proxyVertices += result.nodes[id].proxy.vertexCount();
+    }
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace hlod

@@ -1,0 +1,163 @@
+// Content-addressed proxy files with atomic replace (write temp + rename), see ProxyCache.h.
+#include "pipeline/proxy/ProxyCache.h"
+
+#include <atomic>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <thread>
+
+#include <unistd.h>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/proxy/ContentHash.h"
+
+namespace hlod {
+
+namespace {
+
+constexpr char kMagic[8] = {'H', 'L', 'O', 'D', 'P', 'R', 'X', '\0'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kHasNormals = 1;
+constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 8 + 8 + 3 * 8;
+
+template <class T> void put(std::vector<std::uint8_t>& out, const T& value) {
+    const auto* p = reinterpret_cast<const std::uint8_t*>(&value);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+
+template <class T> void putArray(std::vector<std::uint8_t>& out, const std::vector<T>& values) {
+    if (values.empty()) return;
+    const auto* p = reinterpret_cast<const std::uint8_t*>(values.data());
+    out.insert(out.end(), p, p + values.size() * sizeof(T));
+}
+
+class Reader {
+public:
+    explicit Reader(const std::vector<std::uint8_t>& bytes) : bytes_(bytes) {}
+    template <class T> bool get(T& value) {
+        if (bytes_.size() - pos_ < sizeof(T)) return false;
+        std::memcpy(&value, bytes_.data() + pos_, sizeof(T));
+        pos_ += sizeof(T);
+        return true;
+    }
+    template <class T> bool getArray(std::vector<T>& values, std::uint64_t count) {
+        if (count > (bytes_.size() - pos_) / sizeof(T)) return false;
+        values.resize(count);
+        if (count) std::memcpy(values.data(), bytes_.data() + pos_, count * sizeof(T));
+        pos_ += count * sizeof(T);
+        return true;
+    }
+    std::size_t position() const { return pos_; }
+
+private:
+    const std::vector<std::uint8_t>& bytes_;
+    std::size_t pos_ = 0;
+};
+
+std::filesystem::path uniqueTempName(const std::filesystem::path& target) {
+    static std::atomic<std::uint64_t> counter{0};
+    const std::uint64_t id =
+        hashBytes(nullptr, 0, std::hash<std::thread::id>{}(std::this_thread::get_id())) ^
+        (static_cast<std::uint64_t>(::getpid()) << 32) ^ counter.fetch_add(1);
+    std::filesystem::path tmp = target;
+    tmp += ".tmp-" + toHex(id);
+    return tmp;
+}
+
+} // namespace
+
+std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) {
+    std::vector<std::uint8_t> out;
+    const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.positions.empty();
+    out.reserve(kHeaderBytes + mesh.positions.size() * (normals ? 28 : 16) +
+                mesh.indices.size() * 4 + 8);
+    out.insert(out.end(), kMagic, kMagic + 8);
+    put(out, kVersion);
+    put(out, normals ? kHasNormals : 0u);
+    put(out, key);
+    put(out, static_cast<std::uint64_t>(mesh.positions.size()));
+    put(out, static_cast<std::uint64_t>(mesh.indices.size()));
+    put(out, mesh.origin);
+    putArray(out, mesh.positions);
+    if (normals) putArray(out, mesh.normals);
+    if (mesh.colors.size() == mesh.positions.size()) {
+        putArray(out, mesh.colors);
+    } else {
+        out.insert(out.end(), mesh.positions.size() * 4, 255);
+    }
+    putArray(out, mesh.indices);
+    put(out, hashBytes(out.data(), out.size()));
+    return out;
+}
+
+std::optional<ProxyMesh> decodeProxy(std::uint64_t key, const std::vector<std::uint8_t>& bytes) {
+    if (bytes.size() < kHeaderBytes + 8 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
+        return std::nullopt;
+    }
+    std::uint64_t stored = 0;
+    std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
+    if (stored != hashBytes(bytes.data(), bytes.size() - 8)) return std::nullopt;
+    Reader r(bytes);
+    char magic[8];
+    std::uint32_t version = 0, flags = 0;
+    std::uint64_t fileKey = 0, vertices = 0, indices = 0;
+    ProxyMesh m;
+    if (!r.get(magic) || !r.get(version) || !r.get(flags) || !r.get(fileKey) ||
+        !r.get(vertices) || !r.get(indices) || !r.get(m.origin)) {
+        return std::nullopt;
+    }
+    if (version != kVersion || fileKey != key || indices % 3 != 0) return std::nullopt;
+    if (!r.getArray(m.positions, vertices)) return std::nullopt;
+    if ((flags & kHasNormals) && !r.getArray(m.normals, vertices)) return std::nullopt;
+    if (!r.getArray(m.colors, vertices) || !r.getArray(m.indices, indices)) return std::nullopt;
+    if (r.position() + 8 != bytes.size()) return std::nullopt;
+    for (std::uint32_t i : m.indices) {
+        if (i >= vertices) return std::nullopt;
+    }
+    return m;
+}
+
+ProxyCache::ProxyCache(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+std::filesystem::path ProxyCache::fileFor(std::uint64_t key) const {
+    return folder_ / (toHex(key) + ".hlodproxy");
+}
+
+std::optional<ProxyMesh> ProxyCache::load(std::uint64_t key) const {
+    if (!enabled()) return std::nullopt;
+    std::ifstream in(fileFor(key), std::ios::binary);
+    if (!in) return std::nullopt;
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                    std::istreambuf_iterator<char>());
+    return decodeProxy(key, bytes);
+}
+
+void ProxyCache::store(std::uint64_t key, const ProxyMesh& mesh) const {
+    if (!enabled()) return;
+    const std::filesystem::path target = fileFor(key);
+    std::error_code ec;
+    std::filesystem::create_directories(folder_, ec);
+    if (ec) throw Error(ErrorCode::Io, folder_, "cannot create cache folder: " + ec.message());
+    const std::vector<std::uint8_t> bytes = encodeProxy(key, mesh);
+    const std::filesystem::path tmp = uniqueTempName(target);
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        out.flush();
+        if (!out) {
+            out.close();
+            std::filesystem::remove(tmp, ec);
+            throw Error(ErrorCode::Io, tmp, "cannot write cache file");
+        }
+    }
+    std::filesystem::rename(tmp, target, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+        throw Error(ErrorCode::Io, target, "cannot move cache file into place: " + ec.message());
+    }
+}
+
+} // namespace hlod

@@ -1,0 +1,46 @@
+// On-disk content cache of baked proxies (one file per proxy, named by its 64-bit key).
+//
+// The key is computed by the baker (ProxyBaker.cpp) as a Merkle hash: the hash of a node's
+// method, parameters, error budget and frame, and of each child's key (inner children) or
+// geometry, material colour and transform (leaf children). A node's key therefore changes
+// exactly when something that can change its proxy changes, and is known before any baking.
+//
+// Files: `<dir>/<16 hex digits>.hlodproxy`: magic, format version, key, counts, origin, the
+// vertex streams, indices and a checksum over everything before it. Writes go to a unique
+// temporary file in the same folder and are renamed into place, so a reader (another thread,
+// another process, a rerun after a crash or cancellation) sees a complete file or none.
+// A file that is truncated, has a bad checksum or belongs to another key is a miss (and is
+// overwritten by the next store). Thread-safe: no shared mutable state besides the folder.
+// Failure: store() throws Error(Io) naming the file when the folder cannot be written.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "pipeline/proxy/ProxyMesh.h"
+
+namespace hlod {
+
+class ProxyCache {
+public:
+    // An empty folder disables the cache (load misses, store does nothing).
+    explicit ProxyCache(std::filesystem::path folder);
+
+    bool enabled() const { return !folder_.empty(); }
+    const std::filesystem::path& folder() const { return folder_; }
+
+    std::optional<ProxyMesh> load(std::uint64_t key) const;
+    void store(std::uint64_t key, const ProxyMesh& mesh) const;
+
+    std::filesystem::path fileFor(std::uint64_t key) const;
+
+private:
+    std::filesystem::path folder_;
+};
+
+// The byte encoding used by the cache files (exposed for tests).
+std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh);
+std::optional<ProxyMesh> decodeProxy(std::uint64_t key, const std::vector<std::uint8_t>& bytes);
+
+} // namespace hlod

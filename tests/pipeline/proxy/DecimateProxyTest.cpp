@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "pipeline/proxy/Aggregate.h"
+#include "pipeline/proxy/DecimateProxy.h"
+#include "pipeline/proxy/ErrorBudget.h"
+#include "pipeline/proxy/SloppyProxy.h"
+#include "pipeline/proxy/SmallParts.h"
+#include "pipeline/proxy/Weld.h"
+#include "pipeline/scene/Primitives.h"
+#include "pipeline/proxy/ProxyTestUtil.h"
+
+using namespace hlod;
+
+namespace {
+
+// A unit sphere finely tessellated (128 x 64): its own chord error is about 4e-4, small next
+// to the budget of a 2 m node at 300 px (2 / 300 = 6.7e-3).
+ProxyMesh unitSphereSoup(const glm::dvec3& at = glm::dvec3(0.0)) {
+    Scene s;
+    const Id mesh = s.addMesh(makeSphere(1.0f, 128, 64));
+    const Id inst = s.addInstance(mesh, s.addNode("sphere", 0, glm::translate(glm::dmat4(1.0), at)));
+    const AggregatePart part{inst, nullptr};
+    return aggregateParts(s, std::span(&part, 1), at);
+}
+
+// Largest distance between proxy and the analytic sphere, both ways: proxy samples to the
+// sphere (| |p| - 1 |), and sphere points (Fibonacci directions) to the proxy.
+double hausdorffToUnitSphere(const ProxyMesh& proxy, const glm::dvec3& centre) {
+    double worst = 0.0;
+    for (const glm::dvec3& p : test::surfaceSamples(proxy)) {
+        worst = std::max(worst, std::abs(glm::length(p - centre) - 1.0));
+    }
+    const int n = 600;
+    for (int i = 0; i < n; ++i) {
+        const double z = 1.0 - 2.0 * (i + 0.5) / n, r = std::sqrt(1.0 - z * z);
+        const double phi = i * 2.399963229728653;
+        const glm::dvec3 u(r * std::cos(phi), r * std::sin(phi), z);
+        worst = std::max(worst, test::distanceToMesh(proxy, centre + u));
+    }
+    return worst;
+}
+
+// Connected parts by shared position (finished proxies split vertices at creases).
+std::size_t partsByPosition(ProxyMesh m) {
+    m.colors.assign(m.positions.size(), glm::u8vec4(255));
+    weldVertices(m, 0.0f);
+    return countParts(m);
+}
+
+} // namespace
+
+TEST(DecimateProxy, SphereStaysWithinErrorBudgetBothWays) {
+    // Far from the origin on purpose: proxies live in their node's frame, precision must hold.
+    const glm::dvec3 centre(5000.0, -300.0, 20.0);
+    const double e = proxyErrorBudget(2.0, ScreenParams{}); // 2 m diameter at S=300, t=1
+    ASSERT_NEAR(e, 2.0 / 300.0, 1e-12);
+    const ProxyMesh proxy = decimateProxy(unitSphereSoup(centre), e);
+    EXPECT_LE(hausdorffToUnitSphere(proxy, centre), e);
+    // 16,128 input triangles; within 1/300 of the diameter the sphere keeps well under half.
+    EXPECT_LT(proxy.triangleCount(), 16128u / 2);
+    EXPECT_GT(proxy.triangleCount(), 500u);
+    EXPECT_EQ(proxy.normals.size(), proxy.positions.size());
+    EXPECT_EQ(test::openEdgeCount(proxy), 0u); // topology kept: still closed
+}
+
+TEST(DecimateProxy, LargerBudgetGivesFewerTriangles) {
+    const ProxyMesh fine = decimateProxy(unitSphereSoup(), 0.005);
+    const ProxyMesh coarse = decimateProxy(unitSphereSoup(), 0.05);
+    EXPECT_LT(coarse.triangleCount(), fine.triangleCount());
+    EXPECT_LE(hausdorffToUnitSphere(coarse, glm::dvec3(0.0)), 0.05);
+}
+
+TEST(DecimateProxy, DropsPartsSmallerThanTheBudget) {
+    Scene s;
+    const Id big = s.addMesh(makeBox({1, 1, 1}));
+    const Id tiny = s.addMesh(makeBox({0.001f, 0.001f, 0.001f})); // diagonal 1.7 mm
+    const Id a = s.addInstance(big, s.addNode("big", 0));
+    const Id b = s.addInstance(tiny, s.addNode("tiny", 0, glm::translate(glm::dmat4(1.0), {2, 0, 0})));
+    const AggregatePart parts[] = {{a, nullptr}, {b, nullptr}};
+    // Budget 5 mm: the 1.7 mm box covers less than a pixel at the switch point.
+    const ProxyMesh proxy = decimateProxy(aggregateParts(s, parts, glm::dvec3(0.0)), 0.005);
+    EXPECT_EQ(partsByPosition(proxy), 1u);
+    EXPECT_EQ(proxy.triangleCount(), 12u); // a box cannot lose a triangle within 5 mm
+}
+
+TEST(DecimateProxy, MaterialColourSurvivesAsVertexColour) {
+    Scene s;
+    Material red;
+    red.name = "red";
+    red.baseColor = {1.0f, 0.0f, 0.0f, 1.0f};
+    red.hasTexture = true;
+    red.textureMean = {0.5f, 0.5f, 0.5f, 1.0f}; // a mid-grey texture halves the factor
+    Mesh box = makeBox({1, 1, 1});
+    box.material = s.addMaterial(red);
+    const Id inst = s.addInstance(s.addMesh(std::move(box)), s.addNode("b", 0));
+    const AggregatePart part{inst, nullptr};
+    const ProxyMesh proxy = decimateProxy(aggregateParts(s, std::span(&part, 1), {}), 0.01);
+    ASSERT_FALSE(proxy.colors.empty());
+    for (const glm::u8vec4& c : proxy.colors) {
+        EXPECT_EQ(c, glm::u8vec4(128, 0, 0, 255)); // 0.5 * 255 rounds to 128
+    }
+}
+
+TEST(SloppyProxy, SphereStaysWithinErrorBudgetBothWays) {
+    const double e = 2.0 / 300.0;
+    const ProxyMesh proxy = sloppyProxy(unitSphereSoup(), e);
+    EXPECT_LE(hausdorffToUnitSphere(proxy, glm::dvec3(0.0)), e);
+    EXPECT_LT(proxy.triangleCount(), 16128u);
+}
+
+TEST(SloppyProxy, MergesPartsCloserThanTheBudgetThatDecimateKeepsApart) {
+    // A 20 x 20 grid of separate 1 cm cubes 2 mm apart and a 1 cm budget. Decimation keeps
+    // every cube a separate closed part (it may reduce each to a tetrahedron: the dropped
+    // corner is 1/sqrt(3) cm = 5.8 mm away); grid clustering with 5.8 mm cells merges corners
+    // across the 2 mm gaps, so neighbouring cubes fuse and far fewer triangles remain.
+    Scene s;
+    const Id cube = s.addMesh(makeBox({0.01f, 0.01f, 0.01f}));
+    std::vector<AggregatePart> parts;
+    for (int i = 0; i < 20; ++i) {
+        for (int j = 0; j < 20; ++j) {
+            const glm::dvec3 at(i * 0.012, j * 0.012, 0.0);
+            const Id node = s.addNode("c", 0, glm::translate(glm::dmat4(1.0), at));
+            parts.push_back({s.addInstance(cube, node), nullptr});
+        }
+    }
+    const double e = 0.01;
+    const ProxyMesh sloppy = sloppyProxy(aggregateParts(s, parts, {}), e);
+    const ProxyMesh decimated = decimateProxy(aggregateParts(s, parts, {}), e);
+    EXPECT_EQ(partsByPosition(decimated), 400u);
+    EXPECT_LT(partsByPosition(sloppy), 400u / 4);
+    EXPECT_LT(sloppy.triangleCount(), decimated.triangleCount());
+}

@@ -1,0 +1,47 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "pipeline/proxy/BakeStats.h"
+#include "pipeline/proxy/DlodChain.h"
+#include "pipeline/scene/Primitives.h"
+
+using namespace hlod;
+
+TEST(DlodChain, FourReductionsKeepFortyPercentEach) {
+    const Mesh sphere = makeSphere(1.0f, 64, 32); // 2 * 64 * 31 = 3968 triangles
+    ASSERT_EQ(sphere.triangleCount(), 3968u);
+    const std::vector<Mesh> chain = buildDlodChain(sphere);
+    ASSERT_EQ(chain.size(), 4u);
+    std::size_t previous = sphere.triangleCount();
+    for (const Mesh& level : chain) {
+        // meshoptimizer stops at or just below the target (0.4 * previous).
+        EXPECT_LE(level.triangleCount(), previous * 4 / 10);
+        EXPECT_GE(level.triangleCount(), previous * 3 / 10);
+        EXPECT_EQ(level.normals.size(), level.positions.size()); // attributes carried over
+        EXPECT_EQ(level.uvs.size(), level.positions.size());
+        previous = level.triangleCount();
+    }
+}
+
+TEST(DlodChain, SummaryCountsEveryInstanceAndLevel) {
+    Scene s;
+    const Id sphere = s.addMesh(makeSphere(1.0f, 64, 32));
+    s.addInstance(sphere, s.addNode("a", 0));
+    s.addInstance(sphere, s.addNode("b", 0, glm::translate(glm::dmat4(1.0), {5, 0, 0})));
+    const std::vector<Mesh> chain = buildDlodChain(s.meshes[sphere]);
+    std::size_t perInstance = s.meshes[sphere].triangleCount();
+    for (const Mesh& level : chain) perInstance += level.triangleCount();
+    const DlodSummary summary = summarizeDlodChains(s);
+    EXPECT_EQ(summary.triangles, 2 * perInstance);
+    EXPECT_EQ(summary.meshes, 2u * 5u); // original + 4 reductions, per instance
+    // A chain of 40% steps adds about 0.4 + 0.16 + 0.064 + 0.026 = 0.65 of the original.
+    EXPECT_NEAR(static_cast<double>(perInstance) / 3968.0, 1.65, 0.05);
+}
+
+TEST(DlodChain, TinyClosedPartEndsItsChainWhenNothingCollapses) {
+    // A box has no collapsible edge (every collapse would flip or remove a face plane), so the
+    // chain stops rather than repeating the same mesh four times.
+    const std::vector<Mesh> chain = buildDlodChain(makeBox({1, 1, 1}));
+    for (const Mesh& level : chain) EXPECT_LT(level.triangleCount(), 12u);
+}

@@ -1,0 +1,225 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "TestUtil.h"
+#include "pipeline/core/Error.h"
+#include "pipeline/proxy/ProxyBaker.h"
+#include "pipeline/proxy/ProxyCache.h"
+#include "pipeline/scene/Primitives.h"
+#include "pipeline/proxy/ProxyTestUtil.h"
+
+using namespace hlod;
+
+namespace {
+
+// `groups` x 4 objects (spheres and cylinders) on a grid; tree: root -> one inner node per
+// group -> 4 leaves. With 4 groups: 4 level-1 nodes + the root = 5 inner nodes.
+struct Fixture {
+    Scene scene;
+    ClusterTree tree;
+    std::vector<Id> groupNodes;
+
+    explicit Fixture(int groups = 4) {
+        const Id sphere = scene.addMesh(makeSphere(0.5f, 48, 24));
+        const Id cylinder = scene.addMesh(makeCylinder(0.3f, 1.0f, 32));
+        Material red;
+        red.baseColor = {0.8f, 0.1f, 0.1f, 1.0f};
+        scene.meshes[cylinder].material = scene.addMaterial(red);
+        std::vector<std::pair<int, Id>> leaves;
+        for (int g = 0; g < groups; ++g) {
+            for (int k = 0; k < 4; ++k) {
+                const glm::dvec3 at(g * 10.0 + (k % 2) * 1.5, 0.0, (k / 2) * 1.5);
+                const Id node = scene.addNode("o", 0, glm::translate(glm::dmat4(1.0), at));
+                leaves.push_back({g, scene.addInstance(k % 2 ? cylinder : sphere, node)});
+            }
+        }
+        rebuildTree(groups, leaves);
+    }
+
+    void rebuildTree(int groups, const std::vector<std::pair<int, Id>>& leaves) {
+        test::TreeBuilder b(scene);
+        std::vector<Id> inner;
+        for (int g = 0; g < groups; ++g) {
+            std::vector<Id> kids;
+            for (const auto& [group, inst] : leaves) {
+                if (group == g) kids.push_back(b.leaf(inst));
+            }
+            inner.push_back(b.inner(kids));
+        }
+        groupNodes = inner;
+        tree = b.finish(b.inner(inner));
+    }
+};
+
+std::vector<std::vector<std::uint8_t>> proxyBytes(const BakeResult& r) {
+    std::vector<std::vector<std::uint8_t>> out;
+    for (const NodeBake& n : r.nodes) out.push_back(encodeProxy(n.key, n.proxy));
+    return out;
+}
+
+} // namespace
+
+TEST(ProxyBaker, EveryInnerNodeGetsAProxyFromItsChildren) {
+    Fixture f;
+    BakeParams params;
+    const BakeResult r = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(r.innerNodes, 5u);
+    EXPECT_EQ(r.baked, 5u);
+    EXPECT_EQ(r.reused, 0u);
+    // A group's input: 2 spheres (2*48*23 = 2208 triangles each) + 2 cylinders (128 each).
+    for (Id g : f.groupNodes) {
+        EXPECT_EQ(r.nodes[g].inputTriangles, 2u * 2208u + 2u * 128u);
+        EXPECT_FALSE(r.nodes[g].proxy.empty());
+        EXPECT_LT(r.nodes[g].proxy.triangleCount(), r.nodes[g].inputTriangles);
+    }
+    // The root aggregates its children's proxies, not the original meshes again.
+    std::size_t childProxies = 0;
+    for (Id g : f.groupNodes) childProxies += r.nodes[g].proxy.triangleCount();
+    EXPECT_EQ(r.nodes[f.tree.root].inputTriangles, childProxies);
+    // Leaves get no proxy, but a budget and a switch distance like every node.
+    const Id leaf = f.tree.nodes[f.groupNodes[0]].children[0];
+    EXPECT_TRUE(r.nodes[leaf].proxy.empty());
+    EXPECT_GT(r.nodes[leaf].switchDistance, 0.0);
+    // Budget follows the node diameter: e = diameter / 300 at the defaults.
+    const NodeBake& root = r.nodes[f.tree.root];
+    EXPECT_DOUBLE_EQ(root.errorBudget, root.diameter / 300.0);
+}
+
+TEST(ProxyBaker, OutputIsBitIdenticalForAnyThreadCount) {
+    Fixture f(6);
+    for (ProxyMethod method : {ProxyMethod::Decimate, ProxyMethod::Sloppy, ProxyMethod::Remesh}) {
+        BakeParams params;
+        params.method = method;
+        params.threads = 1;
+        const auto one = proxyBytes(bakeProxies(f.scene, f.tree, params));
+        params.threads = 2;
+        const auto two = proxyBytes(bakeProxies(f.scene, f.tree, params));
+        params.threads = 4;
+        const auto four = proxyBytes(bakeProxies(f.scene, f.tree, params));
+        EXPECT_EQ(one, two) << toString(method);
+        EXPECT_EQ(one, four) << toString(method);
+    }
+}
+
+TEST(ProxyBaker, RerunReusesEveryProxyAndMatchesTheBakedBytes) {
+    Fixture f;
+    test::TempDir dir;
+    BakeParams params;
+    params.cacheDir = dir.path();
+    const BakeResult first = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(first.baked, 5u);
+    params.threads = 1; // the thread count is not part of any key
+    const BakeResult second = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(second.baked, 0u);
+    EXPECT_EQ(second.reused, 5u);
+    EXPECT_EQ(proxyBytes(first), proxyBytes(second));
+}
+
+TEST(ProxyBaker, ParameterChangeRebakesExactlyWhatItAffects) {
+    Fixture f;
+    test::TempDir dir;
+    BakeParams params;
+    params.cacheDir = dir.path();
+    bakeProxies(f.scene, f.tree, params);
+
+    // The pixel tolerance changes every node's budget: everything rebakes...
+    params.screen.pixelError = 2.0;
+    BakeResult r = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(r.baked, 5u);
+    EXPECT_EQ(r.reused, 0u);
+    // ...and going back finds the first bake still cached.
+    params.screen.pixelError = 1.0;
+    r = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(r.baked, 0u);
+    EXPECT_EQ(r.reused, 5u);
+
+    // Another method shares no proxy with decimate.
+    params.method = ProxyMethod::Sloppy;
+    r = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(r.baked, 5u);
+    params.method = ProxyMethod::Decimate;
+
+    // Moving one object (an edit inside group 0, keeping the node boxes) rebakes only its
+    // group node and the root; the other three groups are reused.
+    const Id inst = f.tree.nodes[f.tree.nodes[f.groupNodes[0]].children[1]].instance;
+    Node& n = f.scene.nodes[f.scene.instances[inst].node];
+    n.local = glm::rotate(n.local, 0.3, glm::dvec3(0, 1, 0));
+    f.scene.updateWorldTransforms();
+    r = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(r.baked, 2u);
+    EXPECT_EQ(r.reused, 3u);
+    EXPECT_FALSE(r.nodes[f.groupNodes[0]].reused);
+    EXPECT_FALSE(r.nodes[f.tree.root].reused);
+}
+
+TEST(ProxyBaker, CancelStopsBeforeTheNextNodeAndLeavesOnlyCompleteCacheFiles) {
+    Fixture f(16); // 17 inner nodes
+    test::TempDir dir;
+    std::atomic<bool> cancel{false};
+    std::atomic<std::size_t> finishedAtCancel{0}, lastDone{0};
+    Progress progress;
+    progress.cancel = &cancel;
+    progress.report = [&](const ProgressInfo& info) {
+        lastDone = std::max<std::size_t>(lastDone, info.done);
+        if (info.done >= 3 && !cancel.exchange(true)) finishedAtCancel = info.done;
+    };
+    BakeParams params;
+    params.cacheDir = dir.path();
+    params.threads = 2;
+    try {
+        bakeProxies(f.scene, f.tree, params, progress);
+        FAIL() << "expected Error(Cancelled)";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+    }
+    // Nodes already running finish (at most one per thread); none starts after the flag.
+    EXPECT_LE(lastDone.load(), finishedAtCancel.load() + 2);
+    EXPECT_LT(lastDone.load(), 17u);
+    // The cache holds complete proxies only: each file decodes, no temporary file is left.
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+        ASSERT_EQ(entry.path().extension(), ".hlodproxy") << entry.path();
+        ++files;
+    }
+    EXPECT_EQ(files, lastDone.load());
+    const std::vector<std::uint64_t> keys = computeBakeKeys(f.scene, f.tree, params);
+    const ProxyCache cache(dir.path());
+    std::size_t loadable = 0;
+    for (std::uint64_t key : keys) loadable += cache.load(key).has_value() ? 1 : 0;
+    EXPECT_EQ(loadable, files);
+    // A rerun picks up where the cancelled one stopped.
+    const BakeResult resumed = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(resumed.reused, files);
+    EXPECT_EQ(resumed.baked, 17u - files);
+}
+
+TEST(ProxyBaker, ProgressCountsEveryInnerNodeOnce) {
+    Fixture f;
+    std::mutex mutex;
+    std::vector<std::uint64_t> done;
+    Progress progress;
+    progress.report = [&](const ProgressInfo& info) {
+        std::lock_guard lock(mutex);
+        EXPECT_EQ(info.stage, "bake");
+        EXPECT_EQ(info.total, 5u);
+        done.push_back(info.done);
+    };
+    bakeProxies(f.scene, f.tree, BakeParams{}, progress);
+    std::sort(done.begin(), done.end());
+    EXPECT_EQ(done, (std::vector<std::uint64_t>{0, 1, 2, 3, 4, 5}));
+}
+
+TEST(ProxyBaker, RejectsOutOfRangeParameters) {
+    Fixture f(1);
+    BakeParams params;
+    params.screen.screenSize = 0.0;
+    EXPECT_THROW(bakeProxies(f.scene, f.tree, params), Error);
+    params = BakeParams{};
+    params.threads = -1;
+    EXPECT_THROW(bakeProxies(f.scene, f.tree, params), Error);
+}

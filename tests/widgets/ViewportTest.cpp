@@ -1,0 +1,149 @@
+// Tests of widgets/Viewport: real rendering through Mesa under xvfb-run, compared with baseline
+// images (tests/widgets/baselines, rewritten with HLOD_UPDATE_BASELINES=1).
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <QTest>
+
+#include "TestScenes.h"
+#include "pipeline/io/Import.h"
+#include "pipeline/io/SampleScene.h"
+#include "widgets/GlSupport.h"
+#include "widgets/SceneActors.h"
+#include "widgets/Viewport.h"
+
+namespace hlod::widgets {
+namespace {
+
+// Mean absolute difference (0..255 per channel) tolerated against a baseline: llvmpipe is
+// deterministic on one machine; this absorbs Mesa version drift in anti-aliased edges.
+constexpr double kBaselineTolerance = 2.0;
+
+class ViewportTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const GlProbeResult gl = probeOpenGl();
+        ASSERT_TRUE(gl.ok) << gl.problem.toStdString();
+        viewport = std::make_unique<Viewport>();
+        viewport->setFixedSize(480, 360);
+        viewport->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(viewport.get()));
+        background = viewport->grabFrame(); // nothing loaded yet: gradient only
+        ASSERT_EQ(background.size(), QSize(480, 360));
+    }
+
+    void show(const Scene& scene, const SceneActorsOptions& options = {}) {
+        viewport->setSceneActors(SceneActors::build(scene, options), suggestedUpAxis(scene));
+    }
+
+    std::unique_ptr<Viewport> viewport;
+    QImage background;
+};
+
+TEST_F(ViewportTest, EmptyViewportShowsTheGradientBackground) {
+    ASSERT_TRUE(viewport->glAvailable());
+    // Top row: Background2 (0.36, 0.41, 0.50) -> (92, 105, 128); bottom row: Background
+    // (0.86, 0.88, 0.91) -> (219, 224, 232), give or take interpolation at the very edge.
+    const QRgb top = background.pixel(240, 0);
+    const QRgb bottom = background.pixel(240, 359);
+    EXPECT_NEAR(qRed(top), 92, 3);
+    EXPECT_NEAR(qBlue(top), 128, 3);
+    EXPECT_NEAR(qRed(bottom), 219, 3);
+    EXPECT_NEAR(qBlue(bottom), 232, 3);
+    EXPECT_EQ(test::foregroundShare(background, background), 0.0);
+}
+
+TEST_F(ViewportTest, SampleSceneFillsTheFrameAndMatchesBaseline) {
+    show(makeSampleScene());
+    const QImage frame = viewport->grabFrame();
+    // Fitted to the frame, the yard covers a good part of it (measured ~0.5).
+    EXPECT_GT(test::foregroundShare(frame, background), 0.25);
+    const double diff = test::compareWithBaseline(frame, QStringLiteral("sample"));
+    EXPECT_GE(diff, 0.0) << "missing baseline: run with HLOD_UPDATE_BASELINES=1";
+    EXPECT_LT(diff, kBaselineTolerance);
+}
+
+TEST_F(ViewportTest, SharedRoomSceneMatchesBaseline) {
+    const Scene scene = importScene({HLOD_TEST_DATA_DIR "/scenes/godot-room/room.glb"});
+    show(scene);
+    const QImage frame = viewport->grabFrame();
+    EXPECT_GT(test::foregroundShare(frame, background), 0.25);
+    const double diff = test::compareWithBaseline(frame, QStringLiteral("godot-room"));
+    EXPECT_GE(diff, 0.0) << "missing baseline: run with HLOD_UPDATE_BASELINES=1";
+    EXPECT_LT(diff, kBaselineTolerance);
+}
+
+TEST_F(ViewportTest, OrbitChangesTheImageAndOrbitingBackRestoresIt) {
+    show(test::makeCubeGrid(30));
+    const QImage before = viewport->grabFrame();
+    viewport->orbit(60.0, 0.0);
+    const QImage turned = viewport->grabFrame();
+    EXPECT_GT(test::meanAbsDifference(before, turned), 4.0);
+    viewport->orbit(-60.0, 0.0);
+    EXPECT_LT(test::meanAbsDifference(before, viewport->grabFrame()), 0.05);
+}
+
+TEST_F(ViewportTest, FitViewBringsAZoomedAndPannedSceneBackIntoFrame) {
+    show(test::makeCubeGrid(30));
+    viewport->zoom(6.0);
+    viewport->pan(300.0, 120.0);
+    const QRect lost = test::foregroundBox(viewport->grabFrame(), background);
+    // Zoomed in and pushed aside, the scene is cut by the frame edge.
+    EXPECT_TRUE(lost.isNull() || lost.left() == 0 || lost.top() == 0 || lost.right() == 479 ||
+                lost.bottom() == 359);
+
+    viewport->fitView();
+    const QImage fitted = viewport->grabFrame();
+    const QRect box = test::foregroundBox(fitted, background);
+    ASSERT_FALSE(box.isNull());
+    // Whole scene inside, with the margin free on every side ...
+    EXPECT_GT(box.left(), 2);
+    EXPECT_GT(box.top(), 2);
+    EXPECT_LT(box.right(), 477);
+    EXPECT_LT(box.bottom(), 357);
+    // ... and not lost in the middle: it spans most of the frame in at least one direction.
+    EXPECT_GT(std::max(box.width() / 480.0, box.height() / 360.0), 0.75);
+}
+
+TEST_F(ViewportTest, ZoomInEnlargesTheScene) {
+    show(test::makeCubeGrid(30));
+    const double fitted = test::foregroundShare(viewport->grabFrame(), background);
+    viewport->zoom(1.5);
+    EXPECT_GT(test::foregroundShare(viewport->grabFrame(), background), fitted * 1.3);
+}
+
+TEST_F(ViewportTest, MergedLayoutRendersLikeOneActorPerInstance) {
+    // Same scene, both layouts: merging moves vertices to world space on the CPU, so any
+    // transform or normal mistake shows up as a different image.
+    const Scene scene = test::makeCubeGrid(60);
+    show(scene, {.mergeAbove = 1000});
+    ASSERT_FALSE(viewport->sceneActors()->merged());
+    const QImage perInstance = viewport->grabFrame();
+    show(scene, {.mergeAbove = 0});
+    ASSERT_TRUE(viewport->sceneActors()->merged());
+    EXPECT_LT(test::meanAbsDifference(perInstance, viewport->grabFrame()), 0.5);
+}
+
+TEST_F(ViewportTest, ClearingTheSceneLeavesOnlyBackground) {
+    show(test::makeCubeGrid(10));
+    EXPECT_GT(test::foregroundShare(viewport->grabFrame(), background), 0.05);
+    viewport->clearScene();
+    EXPECT_EQ(test::foregroundShare(viewport->grabFrame(), background), 0.0);
+}
+
+TEST(GlSupport, ProbeFindsAnOpenGl32CoreContext) {
+    const GlProbeResult gl = probeOpenGl();
+    EXPECT_TRUE(gl.ok) << gl.problem.toStdString();
+    EXPECT_FALSE(gl.version.isEmpty());
+    EXPECT_TRUE(gl.problem.isEmpty());
+    QSurfaceFormat old;
+    old.setVersion(3, 1);
+    EXPECT_FALSE(formatIsSufficient(old));
+    QSurfaceFormat newer;
+    newer.setVersion(4, 5);
+    EXPECT_TRUE(formatIsSufficient(newer));
+}
+
+} // namespace
+} // namespace hlod::widgets
