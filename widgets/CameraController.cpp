@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <vtkCamera.h>
@@ -101,28 +102,59 @@ void CameraController::dolly(double factor) {
 void CameraController::fit(const std::array<double, 6>& bounds, double aspect, double margin) {
     if (bounds[0] > bounds[1] || bounds[2] > bounds[3] || bounds[4] > bounds[5])
         return;
-    const glm::dvec3 lo(bounds[0], bounds[2], bounds[4]);
-    const glm::dvec3 hi(bounds[1], bounds[3], bounds[5]);
-    const glm::dvec3 center = (lo + hi) * 0.5;
+    std::vector<glm::dvec3> corners;
+    for (int i = 0; i < 8; ++i)
+        corners.emplace_back(bounds[(i & 1) ? 1 : 0], bounds[(i & 2) ? 3 : 2],
+                             bounds[(i & 4) ? 5 : 4]);
+    fit(corners, aspect, margin);
+}
+
+void CameraController::fit(const std::vector<glm::dvec3>& points, double aspect, double margin) {
+    if (points.empty())
+        return;
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
     glm::dvec3 back = get(camera_->GetPosition()) - get(camera_->GetFocalPoint());
     back = glm::length(back) > 0.0 ? glm::normalize(back) : glm::dvec3(0, 0, 1);
     const glm::dvec3 viewUp = glm::normalize(get(camera_->GetViewUp()));
     const glm::dvec3 right = glm::normalize(glm::cross(viewUp, back));
     const glm::dvec3 upOnScreen = glm::cross(back, right);
-
     const double tanV = std::tan(glm::radians(camera_->GetViewAngle()) / 2.0) * (1.0 - margin);
     const double tanH = tanV * std::max(aspect, 1e-3);
-    // Distance from the centre such that every corner projects inside the frame:
+    const double minDistance = 1e-6 + glm::length(hi - lo) * 0.01;
+
+    // Distance from `center` such that every point projects inside the frame:
     // |x| / (d - z) <= tanH and |y| / (d - z) <= tanV, with z towards the camera.
-    double distance = 0.0;
-    for (int i = 0; i < 8; ++i) {
-        const glm::dvec3 corner((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-        const glm::dvec3 rel = corner - center;
-        const double z = glm::dot(rel, back);
-        distance = std::max({distance, z + std::abs(glm::dot(rel, right)) / tanH,
-                             z + std::abs(glm::dot(rel, upOnScreen)) / tanV});
+    auto distanceFor = [&](const glm::dvec3& center) {
+        double d = minDistance;
+        for (const glm::dvec3& p : points) {
+            const glm::dvec3 rel = p - center;
+            const double z = glm::dot(rel, back);
+            d = std::max({d, z + std::abs(glm::dot(rel, right)) / tanH,
+                          z + std::abs(glm::dot(rel, upOnScreen)) / tanV});
+        }
+        return d;
+    };
+    // Start at the box centre, then move the centre sideways so the projected extents are
+    // symmetric (perspective makes one step approximate: three converge to well under a pixel
+    // of imbalance that matters), keeping every point inside after each move.
+    glm::dvec3 center = (lo + hi) * 0.5;
+    double distance = distanceFor(center);
+    for (int iteration = 0; iteration < 3; ++iteration) {
+        double uMin = 1e300, uMax = -1e300, vMin = 1e300, vMax = -1e300;
+        for (const glm::dvec3& p : points) {
+            const glm::dvec3 rel = p - center;
+            const double depth = distance - glm::dot(rel, back);
+            const double u = glm::dot(rel, right) / depth, v = glm::dot(rel, upOnScreen) / depth;
+            uMin = std::min(uMin, u), uMax = std::max(uMax, u);
+            vMin = std::min(vMin, v), vMax = std::max(vMax, v);
+        }
+        center += distance * (0.5 * (uMin + uMax) * right + 0.5 * (vMin + vMax) * upOnScreen);
+        distance = distanceFor(center);
     }
-    distance = std::max(distance, 1e-6 + glm::length(hi - lo) * 0.01);
     const glm::dvec3 eye = center + back * distance;
     camera_->SetFocalPoint(center.x, center.y, center.z);
     camera_->SetPosition(eye.x, eye.y, eye.z);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -30,9 +31,12 @@ public:
     void pan(double dx, double dy, int viewportHeight);
     // Moves towards the focal point: factor > 1 gets closer (distance / factor).
     void dolly(double factor);
-    // Looks at `bounds` (xmin, xmax, ymin, ymax, zmin, zmax) from the current direction, with
-    // the camera just far enough that all 8 box corners are inside the frustum with `margin`
-    // (fraction of the half-frame) to spare. `aspect` = width / height.
+    // Looks at `points` from the current direction: the view is centred on them and the camera
+    // is just far enough that every point is inside the frustum with `margin` (fraction of the
+    // half-frame) to spare. `aspect` = width / height. Points can be the corners of each
+    // instance's box: much tighter than one box around the scene for sparse layouts.
+    void fit(const std::vector<glm::dvec3>& points, double aspect, double margin = 0.06);
+    // Same for the 8 corners of `bounds` (xmin, xmax, ymin, ymax, zmin, zmax).
     void fit(const std::array<double, 6>& bounds, double aspect, double margin = 0.06);
     // The default view: from the front, right and above (about 30 degrees elevation).
     void setDefaultDirection();

@@ -144,8 +144,8 @@ void applyLook(vtkActor& actor, const ScenePart& part) {
     // Fully transparent materials would vanish; keep them faintly visible.
     property->SetOpacity(part.color.a < kOpaqueAlpha ? std::max(0.05, double(part.color.a)) : 1.0);
     property->SetInterpolationToPhong();
-    property->SetAmbient(0.12);
-    property->SetDiffuse(0.85);
+    property->SetAmbient(0.1);
+    property->SetDiffuse(0.8);
     property->SetSpecular(0.12);
     property->SetSpecularPower(24.0);
 }
@@ -168,16 +168,23 @@ std::shared_ptr<SceneActors> SceneActors::build(const Scene& scene,
                                                 const SceneActorsOptions& options) {
     auto result = std::shared_ptr<SceneActors>(new SceneActors());
     result->instanceCount_ = scene.instances.size();
-    result->merged_ = scene.instances.size() > options.mergeAbove;
-    if (result->merged_)
+    if (scene.instances.size() > options.mergeAbove)
         result->buildMerged(scene, std::max<std::size_t>(options.maxMergedParts, 1));
     else
         result->buildPerInstance(scene);
 
     Aabb box;
+    result->fitPoints_.reserve(scene.instances.size() * 8);
     for (Id i = 0; i < scene.instances.size(); ++i) {
-        box.expand(scene.instanceBounds(i));
+        const Aabb b = scene.instanceBounds(i);
         result->triangleCount_ += scene.meshes[scene.instances[i].mesh].triangleCount();
+        if (b.empty())
+            continue;
+        box.expand(b);
+        for (int c = 0; c < 8; ++c)
+            result->fitPoints_.emplace_back((c & 1) ? b.max.x : b.min.x,
+                                            (c & 2) ? b.max.y : b.min.y,
+                                            (c & 4) ? b.max.z : b.min.z);
     }
     if (!box.empty())
         result->bounds_ = {box.min.x, box.max.x, box.min.y, box.max.y, box.min.z, box.max.z};
@@ -253,6 +260,7 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
         byMaterial.begin(), byMaterial.end(), [](const MergeGroup& g) { return g.triangles > 0; }));
 
     if (used <= maxParts) {
+        layout_ = Layout::PerMaterial;
         for (Id material = 0; material < byMaterial.size(); ++material) {
             const MergeGroup& group = byMaterial[material];
             if (group.triangles == 0)
@@ -277,6 +285,7 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
     // Too many materials for one actor each (TORCS has one per object): merge everything
     // opaque into one polydata and everything translucent into another, with each material's
     // colour (and opacity) stored per vertex.
+    layout_ = Layout::ByOpacity;
     MergeGroup opaque, translucent;
     for (Id i = 0; i < scene.instances.size(); ++i)
         (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);

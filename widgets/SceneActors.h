@@ -59,12 +59,22 @@ public:
     // One actor per part, created on the first call (GUI thread only).
     const std::vector<vtkSmartPointer<vtkActor>>& actors();
 
+    enum class Layout {
+        PerInstance, // one actor per instance
+        PerMaterial, // merged, one part per material
+        ByOpacity,   // merged, one opaque and one translucent part, colours per vertex
+    };
+
     const std::vector<ScenePart>& parts() const { return parts_; }
-    bool merged() const { return merged_; }
+    Layout layout() const { return layout_; }
+    bool merged() const { return layout_ != Layout::PerInstance; }
     std::size_t instanceCount() const { return instanceCount_; }
     std::size_t triangleCount() const { return triangleCount_; }
     // World bounds as VTK wants them: xmin, xmax, ymin, ymax, zmin, zmax.
     const std::array<double, 6>& bounds() const { return bounds_; }
+    // The 8 world-box corners of every instance: what "fit view" frames (tighter than bounds()
+    // for sparse scenes: an empty corner of the scene box does not push the camera back).
+    const std::vector<glm::dvec3>& fitPoints() const { return fitPoints_; }
 
     // The scene instance that cell `cell` of part `part` was made from; kNoId when out of range.
     Id instanceOf(std::size_t part, vtkIdType cell) const;
@@ -75,10 +85,11 @@ private:
 
     std::vector<ScenePart> parts_;
     std::vector<vtkSmartPointer<vtkActor>> actors_;
-    bool merged_ = false;
+    Layout layout_ = Layout::PerInstance;
     std::size_t instanceCount_ = 0;
     std::size_t triangleCount_ = 0;
     std::array<double, 6> bounds_{0, -1, 0, -1, 0, -1};
+    std::vector<glm::dvec3> fitPoints_;
 };
 
 // Linear RGB to sRGB display value, per channel, for colours given to VTK.

@@ -48,7 +48,7 @@ Viewport::Viewport(QWidget* parent)
     renderer_->AutomaticLightCreationOff();
     // Key, fill and back lights that follow the camera: every side of an orbited model is lit.
     vtkNew<vtkLightKit> lights;
-    lights->SetKeyLightIntensity(0.85);
+    lights->SetKeyLightIntensity(0.7);
     lights->AddLightsToRenderer(renderer_);
     renderer_->GetActiveCamera()->SetViewAngle(30.0);
 
@@ -220,7 +220,7 @@ void Viewport::fitView() {
         return;
     // Before the first resize the widget has a placeholder size: fit again once it is real.
     fitPending_ = !isVisible();
-    controller_.fit(actors_->bounds(), aspect());
+    controller_.fit(actors_->fitPoints(), aspect());
     cameraChanged();
 }
 

@@ -13,6 +13,15 @@ LoadedScene loadSceneArgs(const std::vector<std::string>& positionals,
         out.inputs = {"sample:plant"};
         return out;
     }
+    if (positionals.size() == 1 && isPackageFolder(positionals[0])) {
+        out.package = readPackage(positionals[0]);
+        out.scene = readPackageScene(*out.package);
+        out.inputs = positionals;
+        for (const auto& e : std::filesystem::recursive_directory_iterator(positionals[0])) {
+            if (e.is_regular_file()) out.fileBytes += e.file_size();
+        }
+        return out;
+    }
     std::vector<std::filesystem::path> paths(positionals.begin(), positionals.end());
     ProgressBar bar;
     out.scene = importScene(paths, options, bar.progress());

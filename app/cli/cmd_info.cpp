@@ -54,6 +54,16 @@ nlohmann::json toJson(const LoadedScene& loaded) {
                              {"triangles", m.triangleCount()}});
     }
     j["instances"] = std::move(instances);
+    if (loaded.package) {
+        const PackageInfo& p = *loaded.package;
+        j["package"] = {{"tree_nodes", p.tree.nodes.size()},
+                        {"leaves", p.tree.leafCount()},
+                        {"height", p.tree.height()},
+                        {"leaf_triangles", p.leafTriangles},
+                        {"proxy_triangles", p.proxyTriangles},
+                        {"volume", toString(p.tree.volume)},
+                        {"source", p.manifest.value("source", nlohmann::json::object())}};
+    }
     return j;
 }
 
@@ -75,6 +85,12 @@ void printText(const LoadedScene& loaded) {
                 b.min.z, b.max.x, b.max.y, b.max.z);
     const glm::dvec3 e = b.extent();
     std::printf("size:       %.3f x %.3f x %.3f m\n", e.x, e.y, e.z);
+    if (loaded.package) {
+        const PackageInfo& p = *loaded.package;
+        std::printf("package:    %zu tree nodes (%zu leaves, height %d, %s), %zu proxy triangles\n",
+                    p.tree.nodes.size(), p.tree.leafCount(), p.tree.height(),
+                    toString(p.tree.volume), p.proxyTriangles);
+    }
 }
 
 } // namespace

@@ -44,6 +44,19 @@ QString sceneName(const QStringList& files) {
     return RecentScenes::label(files);
 }
 
+QString layoutName(hlod::widgets::SceneActors::Layout layout) {
+    using Layout = hlod::widgets::SceneActors::Layout;
+    switch (layout) {
+    case Layout::PerInstance:
+        return QCoreApplication::translate("MainWindow", "one actor per instance");
+    case Layout::PerMaterial:
+        return QCoreApplication::translate("MainWindow", "merged per material");
+    case Layout::ByOpacity:
+        return QCoreApplication::translate("MainWindow", "merged by opacity");
+    }
+    return {};
+}
+
 QString seconds(double s) { return QLocale().toString(s, 'f', 2); }
 
 } // namespace
@@ -306,8 +319,7 @@ void MainWindow::onLoaded(const LoadedScene& result) {
                    .arg(locale.toString(static_cast<qulonglong>(stats.triangles)))
                    .arg(locale.toString(static_cast<qulonglong>(stats.materials)))
                    .arg(seconds(result.importSeconds), seconds(result.buildSeconds))
-                   .arg(result.actors->merged() ? tr("merged per material")
-                                                : tr("one actor per instance")));
+                   .arg(layoutName(result.actors->layout())));
     if (!result.files.isEmpty() && writeSettings_) {
         recent_.add(result.files);
         rebuildRecentMenu();

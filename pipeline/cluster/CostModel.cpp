@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -117,32 +118,50 @@ double CostModel::mergeCost(const ClusterUnit& lo, const ClusterUnit& hi) const 
     return evaluate(lo, hi, lo.sphere, hull(lo.box, hi.box)).cost;
 }
 
-Aabb CostModel::searchBox(const ClusterUnit& u) const {
-    if (volume_ == VolumeType::Aabb) return u.box;
-    const glm::dvec3 r(u.sphere.radius);
-    return Aabb{u.sphere.center - r, u.sphere.center + r};
+Region CostModel::regionOf(const ClusterUnit& u) const {
+    Region r;
+    if (volume_ == VolumeType::Aabb) {
+        r.box = u.box;
+    } else {
+        const glm::dvec3 radius(u.sphere.radius);
+        r.box = Aabb{u.sphere.center - radius, u.sphere.center + radius};
+    }
+    r.maxFv = u.fv;
+    r.minRadius = u.sphere.radius;
+    r.minVolume = u.volume;
+    r.minExtent = u.box.max - u.box.min;
+    return r;
 }
 
-double CostModel::lowerBound(const ClusterUnit& x, const Aabb& region, double maxFv) const {
+int CostModel::sizeClass(const ClusterUnit& u) const {
+    const double size = volume_ == VolumeType::Sphere ? u.sphere.radius : std::cbrt(u.volume);
+    return size > 0.0 ? std::ilogb(size) : std::numeric_limits<int>::min();
+}
+
+double CostModel::lowerBound(const ClusterUnit& x, const Region& g) const {
     // cost = V_AB^2 / fv_AB * shape, with fv_AB <= min(V_AB, fv_x + fv_g) (clamp above), so
     // cost >= V_AB * max(1, V_AB / (fv_x + maxFv)) * shape, increasing in V_AB: it suffices to
     // bound V_AB (and the shape factor) from below.
-    const double fvSum = x.fv + maxFv;
+    const double fvSum = x.fv + g.maxFv;
     if (volume_ == VolumeType::Sphere) {
-        // The merged sphere holds x's sphere and some point p of the region, so its diameter
-        // is at least |p - c_x| + r_x.
+        // The merged sphere holds x's ball and g's ball (radius >= minRadius, inside the box).
+        // When x's centre is outside the box (distance d > 0) g's farthest point is at least
+        // d + 2 minRadius away, else at least minRadius; the diameter is at least that plus
+        // r_x.
         const glm::dvec3 c = x.sphere.center;
-        const glm::dvec3 q = glm::clamp(c, region.min, region.max);
-        const double d = glm::length(q - c);
-        const double r = std::max(x.sphere.radius, (d + x.sphere.radius) * 0.5);
+        const double d = glm::length(glm::clamp(c, g.box.min, g.box.max) - c);
+        const double far = d > 0.0 ? d + 2.0 * g.minRadius : g.minRadius;
+        const double r = std::max({x.sphere.radius, g.minRadius, (far + x.sphere.radius) * 0.5});
         const double v = 4.0 / 3.0 * std::numbers::pi * r * r * r;
         return r * r * r * std::max(1.0, v / fvSum) * kBoundSafety;
     }
-    // The merged box holds x's box and some point of the region: per axis at least the gap
-    // added to x's extent; at most the hull of x and the whole region.
-    const glm::dvec3 lbExt = glm::max(x.box.max, region.min) - glm::min(x.box.min, region.max);
-    const glm::dvec3 ubExt = glm::max(x.box.max, region.max) - glm::min(x.box.min, region.min);
-    const double v = lbExt.x * lbExt.y * lbExt.z;
+    // The merged box holds x's box, a point of the region (per axis: x's extent plus the gap)
+    // and g's box (at least minExtent per axis, minVolume in all); it lies in the hull of x
+    // and the region.
+    const glm::dvec3 lbExt = glm::max(
+        glm::max(x.box.max, g.box.min) - glm::min(x.box.min, g.box.max), g.minExtent);
+    const glm::dvec3 ubExt = glm::max(x.box.max, g.box.max) - glm::min(x.box.min, g.box.min);
+    const double v = std::max(lbExt.x * lbExt.y * lbExt.z, g.minVolume);
     const double shape =
         std::max(1.0, std::max({lbExt.x, lbExt.y, lbExt.z}) / std::min({ubExt.x, ubExt.y,
                                                                         ubExt.z}));

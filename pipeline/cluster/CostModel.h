@@ -43,6 +43,16 @@ struct ClusterUnit {
     double fill() const { return volume > 0.0 ? fv / volume : 1.0; }
 };
 
+// What a spatial search knows about a set of clusters (a BVH node, MergeBvh.h): lower bounds
+// of their size and an upper bound of their F*V.
+struct Region {
+    Aabb box;            // holds every cluster's search volume
+    double maxFv = 0.0;  // largest F*V
+    double minRadius = 0.0;
+    double minVolume = 0.0;
+    glm::dvec3 minExtent{0.0}; // smallest box extent per axis
+};
+
 class CostModel {
 public:
     // `volume` must be VolumeType::Sphere or VolumeType::Aabb; `k` >= 0 (used by Aabb only).
@@ -62,13 +72,18 @@ public:
     // merge(lo, hi).cost, computing only what the cost needs (same arithmetic, same bits).
     double mergeCost(const ClusterUnit& lo, const ClusterUnit& hi) const;
 
-    // Lower bound of mergeCost(x, g) over every cluster g whose model volume lies inside
-    // `region` (a box) and whose fv is at most `maxFv`. Used to prune spatial searches; it is
-    // slightly below the mathematical bound so rounding can never make it exceed a real cost.
-    double lowerBound(const ClusterUnit& x, const Aabb& region, double maxFv) const;
+    // Lower bound of mergeCost(x, g) over every cluster g described by `region`. Used to prune
+    // spatial searches; it is slightly below the mathematical bound so rounding can never make
+    // it exceed a real cost.
+    double lowerBound(const ClusterUnit& x, const Region& region) const;
 
-    // The box a clustering volume occupies (the sphere's box for the sphere model).
-    Aabb searchBox(const ClusterUnit& u) const;
+    // The region of the single cluster u (its search box: the sphere's box for the sphere
+    // model).
+    Region regionOf(const ClusterUnit& u) const;
+
+    // Size class for MergeBvh: binary exponent of the radius (sphere) or of the cube root of
+    // the volume (box), so clusters within a class differ in size by less than 2x.
+    int sizeClass(const ClusterUnit& u) const;
 
     // Model cost of a single cluster with its own volume and fill.
     double costOf(const Sphere& s, const Aabb& box, double volume, double fv) const;

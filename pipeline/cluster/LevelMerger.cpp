@@ -55,8 +55,8 @@ public:
         groupOf_.resize(n);
         next_.assign(n, kNone);
         groups_.resize(n);
-        std::vector<Aabb> boxes(n);
-        std::vector<double> fv(n);
+        std::vector<Region> regions(n);
+        std::vector<int> sizeClass(n);
         for (std::uint32_t i = 0; i < n; ++i) {
             Group& g = groups_[i];
             g.unit = builder.unit(units[i]);
@@ -64,10 +64,10 @@ public:
             g.head = g.tail = i;
             g.size = 1;
             groupOf_[i] = i;
-            boxes[i] = model_.searchBox(g.unit);
-            fv[i] = g.unit.fv;
+            regions[i] = model_.regionOf(g.unit);
+            sizeClass[i] = model_.sizeClass(g.unit);
         }
-        bvh_.build(boxes, fv);
+        bvh_.build(regions, sizeClass);
         seen_.assign(n, 0);
     }
 
@@ -148,9 +148,7 @@ private:
         best.group = g;
         std::uint32_t stamp = 0;
         if (seen) stamp = ++stamp_;
-        auto bound = [&](const MergeBvh::Node& n) {
-            return model_.lowerBound(G.unit, n.box, n.maxFv);
-        };
+        auto bound = [&](const Region& r) { return model_.lowerBound(G.unit, r); };
         auto visit = [&](std::uint32_t item) {
             const std::uint32_t h = groupOf_[item];
             if (h == g) return;
@@ -193,7 +191,7 @@ private:
         const auto id = static_cast<std::uint32_t>(groups_.size());
         groups_.push_back(z);
         seen_.push_back(0);
-        const Aabb box = model_.searchBox(z.unit);
+        const Aabb box = model_.regionOf(z.unit).box;
         for (std::uint32_t i = z.head; i != kNone; i = next_[i]) {
             groupOf_[i] = id;
             bvh_.grow(i, box, z.unit.fv);

@@ -166,6 +166,15 @@ bool ExteriorFill::isExterior(const openvdb::Coord& voxel) const {
     return (masks_[static_cast<std::size_t>(state)].exterior[n >> 6] >> (n & 63)) & 1ull;
 }
 
+std::array<std::uint64_t, 8> ExteriorFill::exteriorMask(const openvdb::Coord& voxel) const {
+    std::array<std::uint64_t, 8> out{};
+    const std::int64_t block = blockIndex(blockOf(voxel));
+    const std::int32_t state = block < 0 ? kEmptyReached : state_[static_cast<std::size_t>(block)];
+    if (state == kEmptyReached) out.fill(kAll);
+    else if (state >= 0) out = masks_[static_cast<std::size_t>(state)].exterior;
+    return out;
+}
+
 bool ExteriorFill::isSolid(const openvdb::Coord& voxel) const {
     const std::int64_t block = blockIndex(blockOf(voxel));
     if (block < 0) return false;

@@ -27,6 +27,8 @@ public:
     ExteriorFill(const openvdb::FloatGrid& distance, float solidBelow);
 
     bool isExterior(const openvdb::Coord& voxel) const;
+    // The exterior voxels of the 8^3 block holding `voxel`, bit n = OpenVDB leaf offset n.
+    std::array<std::uint64_t, 8> exteriorMask(const openvdb::Coord& voxel) const;
     bool isSolid(const openvdb::Coord& voxel) const;
     // Origins (multiples of 8) of blocks without solid voxels that the fill did not reach and
     // that touch a block with solid voxels: enclosed empty space next to a surface.

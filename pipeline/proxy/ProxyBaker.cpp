@@ -72,6 +72,7 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
     case ProxyMethod::Remesh:
         h.addValue(params.remesh.voxelFraction);
         h.addValue(params.remesh.shellVoxels);
+        h.addValue(params.remesh.keepVoxels);
         h.addValue(params.remesh.adaptivity);
         h.addValue(params.remesh.maxVoxelsPerAxis);
         break;

@@ -12,11 +12,14 @@
 //  4. exterior flood fill from outside the bounding box (ExteriorFill): everything the fill
 //     does not reach - the inside of closed objects, boxes inside boxes, cavities - is solid;
 //  5. iso-surface of that solid at offset d (volumeToMesh), quads split into triangles; each
-//     vertex takes the colour of the nearest input triangle (OpenVDB's closest-polygon grid);
-//  6. quadric simplification with the rest of the budget, then normals (ProxyFinish.h).
-// Error: the shell lies d outside the visible input surface (plus the iso-surface sampling
-// error of a fraction of h); the simplifier gets what is left of the budget. Hidden parts are
-// gone by design. A part thinner than 2d becomes a closed slab 2d thick.
+//     vertex is pulled back towards the closest input triangle (OpenVDB's closest-polygon
+//     grid) to a distance `keep`, and takes that triangle's colour;
+//  6. quadric simplification with the rest of the budget (checked, DeviationCheck.h), then
+//     normals (ProxyFinish.h).
+// Error: the shell lies about `keep` outside the visible input surface (plus the iso-surface
+// sampling error, a fraction of h); the simplifier gets what is left of the budget. Hidden
+// parts are gone by design; a part thinner than 2 keep becomes a closed slab 2 keep thick;
+// gaps narrower than 2d are closed.
 // Cancellation: checks `progress` during voxelisation and between steps; throws
 // Error(Cancelled). Deterministic for any number of threads (OpenVDB's parallel kernels write
 // disjoint voxels and order their output by leaf).
@@ -28,9 +31,10 @@
 namespace hlod {
 
 struct RemeshOptions {
-    float voxelFraction = 0.5f;    // h = voxelFraction * budget
+    float voxelFraction = 1.0f;    // h = voxelFraction * budget
     float shellVoxels = 0.6f;      // d = shellVoxels * h (must exceed 0.5 to seal, see above)
-    float adaptivity = 0.0f;       // OpenVDB volumeToMesh adaptivity
+    float keepVoxels = 0.2f;       // keep = keepVoxels * h, offset left after pulling back
+    float adaptivity = 0.25f;      // OpenVDB volumeToMesh adaptivity (merges flat regions)
     // Voxel count guard: above this many voxels along the largest axis h grows instead.
     int maxVoxelsPerAxis = 1024;
 };

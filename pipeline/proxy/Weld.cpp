@@ -82,31 +82,83 @@ void rebuild(ProxyMesh& m, const std::vector<std::uint32_t>& remap,
     m = std::move(out);
 }
 
+// Open-addressing table from a key to the first representative filed under it; further
+// representatives of the same key are chained through `next`.
+class KeyTable {
+public:
+    explicit KeyTable(std::size_t expected) {
+        std::size_t buckets = 16;
+        while (buckets < 2 * expected) buckets *= 2;
+        slots_.assign(buckets, kUnset);
+    }
+    // Head of the chain for `key` (kUnset when none).
+    std::uint32_t head(const CellKey& key) const {
+        for (std::size_t s = hashKey(key) & (slots_.size() - 1);; s = (s + 1) & (slots_.size() - 1)) {
+            if (slots_[s] == kUnset) return kUnset;
+            if (keys_[slots_[s]] == key) return heads_[slots_[s]];
+        }
+    }
+    void add(const CellKey& key, std::uint32_t rep, std::vector<std::uint32_t>& next) {
+        std::size_t s = hashKey(key) & (slots_.size() - 1);
+        while (slots_[s] != kUnset && !(keys_[slots_[s]] == key)) s = (s + 1) & (slots_.size() - 1);
+        if (slots_[s] == kUnset) {
+            slots_[s] = static_cast<std::uint32_t>(keys_.size());
+            keys_.push_back(key);
+            heads_.push_back(kUnset);
+        }
+        next[rep] = heads_[slots_[s]];
+        heads_[slots_[s]] = rep;
+    }
+
+private:
+    std::vector<std::uint32_t> slots_;
+    std::vector<CellKey> keys_;
+    std::vector<std::uint32_t> heads_;
+};
+
 } // namespace
 
 void weldVertices(ProxyMesh& mesh, float tolerance) {
     const std::size_t n = mesh.positions.size();
     if (n == 0) return;
-    const double inverseCell = tolerance > 0.0f ? 1.0 / static_cast<double>(tolerance) : 0.0;
-    std::size_t buckets = 16;
-    while (buckets < 2 * n) buckets *= 2;
-    std::vector<std::uint32_t> table(buckets, kUnset);
-    std::vector<CellKey> keys;
-    std::vector<std::uint32_t> representative;
-    std::vector<std::uint32_t> remap(n, kUnset);
-    keys.reserve(n);
+    // Cells twice the tolerance wide: the vertices within `tolerance` of a point lie in at most
+    // two cells per axis, so a vertex near a cell wall still finds its twin in the next cell.
+    const double inverseCell = tolerance > 0.0f ? 0.5 / static_cast<double>(tolerance) : 0.0;
+    KeyTable table(n);
+    std::vector<std::uint32_t> representative, next, remap(n, kUnset);
     representative.reserve(n);
+    next.reserve(n);
     for (std::uint32_t v : mesh.indices) {
         if (remap[v] != kUnset) continue;
-        const CellKey key = keyOf(mesh, v, inverseCell);
-        std::size_t slot = hashKey(key) & (buckets - 1);
-        while (table[slot] != kUnset && !(keys[table[slot]] == key)) slot = (slot + 1) & (buckets - 1);
-        if (table[slot] == kUnset) {
-            table[slot] = static_cast<std::uint32_t>(keys.size());
-            keys.push_back(key);
-            representative.push_back(v);
+        CellKey key = keyOf(mesh, v, inverseCell);
+        std::uint32_t found = kUnset;
+        if (inverseCell == 0.0) {
+            found = table.head(key);
+        } else {
+            const glm::vec3& p = mesh.positions[v];
+            const glm::vec3 lo = p - glm::vec3(tolerance), hi = p + glm::vec3(tolerance);
+            for (std::int64_t x = cellOf(lo.x, inverseCell); x <= cellOf(hi.x, inverseCell) && found == kUnset; ++x) {
+                for (std::int64_t y = cellOf(lo.y, inverseCell); y <= cellOf(hi.y, inverseCell) && found == kUnset; ++y) {
+                    for (std::int64_t z = cellOf(lo.z, inverseCell); z <= cellOf(hi.z, inverseCell) && found == kUnset; ++z) {
+                        const CellKey probe{x, y, z, key.color};
+                        for (std::uint32_t r = table.head(probe); r != kUnset; r = next[r]) {
+                            const glm::vec3 delta = glm::abs(mesh.positions[representative[r]] - p);
+                            if (delta.x <= tolerance && delta.y <= tolerance && delta.z <= tolerance) {
+                                found = r;
+                                break;
+                            }
+                        }
+                    }
+                }
+            }
         }
-        remap[v] = table[slot];
+        if (found == kUnset) {
+            found = static_cast<std::uint32_t>(representative.size());
+            representative.push_back(v);
+            next.push_back(kUnset);
+            table.add(key, found, next);
+        }
+        remap[v] = found;
     }
     rebuild(mesh, remap, representative);
 }

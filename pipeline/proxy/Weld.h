@@ -1,12 +1,13 @@
-// Vertex welding of an aggregated proxy input: vertices whose positions fall into the same cell
-// of a grid with spacing `tolerance` and whose colours are equal become one vertex (the first
-// one in index order keeps its position). Triangles that become degenerate (two equal corners)
+// Vertex welding of an aggregated proxy input: a vertex whose colour equals that of an earlier
+// vertex and whose position is within `tolerance` of it on every axis becomes that vertex (the
+// first one in index order keeps its position). A hash grid of cells 2 * tolerance wide finds
+// the candidates, neighbouring cells included, so twins straddling a cell wall still weld. Triangles that become degenerate (two equal corners)
 // are removed and unreferenced vertices dropped.
 //
 // Why: children come from different meshes and transforms, so surfaces that touch in the scene
 // share positions only up to float rounding; welded, the quadric simplifier sees one connected
 // surface and can collapse across the former seams instead of locking them as borders.
-// Error: a vertex moves by at most tolerance * sqrt(3) (the cell diagonal).
+// Error: a vertex moves by at most tolerance * sqrt(3).
 // tolerance == 0 welds bit-identical positions only. Normals are dropped (recomputed later).
 // Deterministic: output order follows first use in the index buffer.
 #pragma once

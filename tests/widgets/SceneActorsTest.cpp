@@ -16,7 +16,7 @@ namespace {
 TEST(SceneActors, SmallSceneGetsOneActorPerInstanceSharingMeshData) {
     const Scene scene = test::makeTinyScene();
     auto actors = SceneActors::build(scene);
-    ASSERT_FALSE(actors->merged());
+    ASSERT_EQ(actors->layout(), SceneActors::Layout::PerInstance);
     ASSERT_EQ(actors->parts().size(), 3u);
     // Instances 0 and 1 both draw mesh "tri": one polydata, two placements.
     EXPECT_EQ(actors->parts()[0].polyData.Get(), actors->parts()[1].polyData.Get());
@@ -49,7 +49,7 @@ TEST(SceneActors, LargeSceneIsMergedPerMaterialInWorldSpace) {
     SceneActorsOptions options;
     options.mergeAbove = 0; // force the merged layout on the tiny scene
     auto actors = SceneActors::build(test::makeTinyScene(), options);
-    ASSERT_TRUE(actors->merged());
+    ASSERT_EQ(actors->layout(), SceneActors::Layout::PerMaterial);
     // Material 0 holds both triangles (instances 0, 1), material 1 the quad (instance 2).
     ASSERT_EQ(actors->parts().size(), 2u);
     const ScenePart& grey = actors->parts()[0];
@@ -89,6 +89,7 @@ TEST(SceneActors, ManyMaterialsMergeByOpacityWithColoursPerVertex) {
         scene.instances[i].mesh = scene.addMesh(cube);
     }
     auto actors = SceneActors::build(scene, {.mergeAbove = 0});
+    EXPECT_EQ(actors->layout(), SceneActors::Layout::ByOpacity);
     ASSERT_EQ(actors->parts().size(), 2u);
     const ScenePart& opaque = actors->parts()[0];
     const ScenePart& translucent = actors->parts()[1];

@@ -106,8 +106,8 @@ TEST(CostModel, FlatLeafIsPaddedToTheMinimumExtent) {
 }
 
 TEST(CostModel, LowerBoundNeverExceedsARealCost) {
-    // For random pairs, the bound over the region holding g (g's own box, fv = g's fv) must
-    // not exceed the real merge cost, for every model.
+    // For random pairs, the bound over the region of g alone must not exceed the real merge
+    // cost, for every model (spheres of every size, boxes far apart and overlapping).
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> pos(-20.0, 20.0), size(0.01, 5.0);
     for (auto [vol, k] : {std::pair{VolumeType::Sphere, 0.0}, {VolumeType::Aabb, 0.0},
@@ -118,8 +118,8 @@ TEST(CostModel, LowerBoundNeverExceedsARealCost) {
             const glm::dvec3 pa(pos(rng), pos(rng), pos(rng)), pb(pos(rng), pos(rng), pos(rng));
             const ClusterUnit a = boxLeaf(m, pa, pa + glm::dvec3(size(rng), size(rng), size(rng)));
             const ClusterUnit b = boxLeaf(m, pb, pb + glm::dvec3(size(rng), size(rng), size(rng)));
-            EXPECT_LE(m.lowerBound(a, m.searchBox(b), b.fv), m.mergeCost(a, b));
-            EXPECT_LE(m.lowerBound(b, m.searchBox(a), a.fv), m.mergeCost(a, b));
+            EXPECT_LE(m.lowerBound(a, m.regionOf(b)), m.mergeCost(a, b));
+            EXPECT_LE(m.lowerBound(b, m.regionOf(a)), m.mergeCost(a, b));
         }
     }
 }

@@ -1,0 +1,207 @@
+// The package on the sample scene: 3D Tiles rules checked one by one (version, refinement,
+// geometric error decreasing to 0 at leaves, boxes containing their children, safe relative
+// content URIs), the manifest round trip, and atomicity under cancellation and failure.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "TestUtil.h"
+#include "pipeline/cluster/Cluster.h"
+#include "pipeline/core/Error.h"
+#include "pipeline/export/Package.h"
+#include "pipeline/io/SampleScene.h"
+
+using namespace hlod;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Built {
+    Scene scene = makeSampleScene();
+    ClusterTree tree;
+    BakeParams params;
+    BakeResult bake;
+    Built() {
+        tree = buildClusterTree(scene, ClusterParams{});
+        params.threads = 2;
+        bake = bakeProxies(scene, tree, params);
+    }
+};
+
+const Built& built() {
+    static const Built b;
+    return b;
+}
+
+nlohmann::json readJson(const fs::path& p) {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in);
+}
+
+// Z-up box (center, 3 half axes aligned with x, y, z) as min/max.
+std::pair<glm::dvec3, glm::dvec3> boxMinMax(const nlohmann::json& b) {
+    const glm::dvec3 c(b[0], b[1], b[2]);
+    const glm::dvec3 h(b[3].get<double>(), b[7].get<double>(), b[11].get<double>());
+    return {c - h, c + h};
+}
+
+void checkTile(const nlohmann::json& tile, const fs::path& dir, std::size_t& tiles) {
+    ++tiles;
+    const auto [mn, mx] = boxMinMax(tile["boundingVolume"]["box"]);
+    const double err = tile["geometricError"];
+    if (tile.contains("content")) {
+        const std::string uri = tile["content"]["uri"];
+        EXPECT_FALSE(fs::path(uri).is_absolute()) << uri;
+        EXPECT_EQ(uri.find(".."), std::string::npos) << uri;
+        EXPECT_TRUE(fs::is_regular_file(dir / uri)) << uri;
+    }
+    if (!tile.contains("children")) {
+        EXPECT_EQ(err, 0.0); // leaves hold the original meshes: no error
+        return;
+    }
+    EXPECT_GT(err, 0.0);
+    for (const auto& child : tile["children"]) {
+        EXPECT_LE(child["geometricError"].get<double>(), err);
+        const auto [cmn, cmx] = boxMinMax(child["boundingVolume"]["box"]);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_LE(mn[a], cmn[a] + 1e-6);
+            EXPECT_GE(mx[a], cmx[a] - 1e-6);
+        }
+        checkTile(child, dir, tiles);
+    }
+}
+
+} // namespace
+
+TEST(Package, TilesetFollowsThe3DTilesRules) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    const PackageSummary s = writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    const nlohmann::json ts = readJson(tmp / "pkg" / "tileset.json");
+    EXPECT_EQ(ts["asset"]["version"], "1.1");
+    EXPECT_EQ(ts["root"]["refine"], "REPLACE");
+    EXPECT_GE(ts["geometricError"].get<double>(), ts["root"]["geometricError"].get<double>());
+    std::size_t tiles = 0;
+    checkTile(ts["root"], tmp / "pkg", tiles);
+    EXPECT_EQ(tiles, b.tree.nodes.size()); // one tile per cluster node
+    EXPECT_EQ(s.tiles, b.tree.nodes.size());
+    EXPECT_FALSE(ts["root"].contains("transform")); // local frame without --geo
+}
+
+TEST(Package, RootBoxHoldsTheSceneInZUp) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    const auto [mn, mx] =
+        boxMinMax(readJson(tmp / "pkg" / "tileset.json")["root"]["boundingVolume"]["box"]);
+    // Sample yard: x in [-60, 60], y (up) in [-0.5, 12], z in [-40, 40]; Z-up: (x, -z, y).
+    EXPECT_NEAR(mn.x, -60.0, 1e-6);
+    EXPECT_NEAR(mx.x, 60.0, 1e-6);
+    EXPECT_NEAR(mn.y, -40.0, 1e-6);
+    EXPECT_NEAR(mn.z, -0.5, 1e-6);
+    EXPECT_NEAR(mx.z, 12.0, 1e-6);
+}
+
+TEST(Package, ReadsBackWithTheSameTreeAndCounts) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    ASSERT_TRUE(isPackageFolder(tmp / "pkg"));
+    const PackageInfo info = readPackage(tmp / "pkg");
+    ASSERT_EQ(info.tree.nodes.size(), b.tree.nodes.size());
+    EXPECT_EQ(info.tree.root, b.tree.root);
+    for (Id i = 0; i < b.tree.nodes.size(); ++i) {
+        EXPECT_EQ(info.tree.nodes[i].children, b.tree.nodes[i].children);
+        EXPECT_EQ(info.tree.nodes[i].instance, b.tree.nodes[i].instance);
+    }
+    EXPECT_EQ(info.proxyTriangles, b.bake.proxyTriangles);
+    const Scene back = readPackageScene(info);
+    const SceneStats orig = b.scene.stats(), st = back.stats();
+    EXPECT_EQ(st.triangles, orig.triangles);
+    EXPECT_EQ(st.instances, orig.instances);
+    const Aabb a = b.scene.worldBounds(), c = back.worldBounds();
+    EXPECT_NEAR(glm::length(a.min - c.min), 0.0, 1e-4); // floats relative to tile centres
+    EXPECT_NEAR(glm::length(a.max - c.max), 0.0, 1e-4);
+}
+
+TEST(Package, CancelledExportLeavesTheOldPackageUntouched) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    const std::string before = [&] {
+        std::ifstream in(tmp / "pkg" / "hlod.json");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    std::atomic<bool> cancel{false};
+    Progress p;
+    p.cancel = &cancel;
+    p.report = [&](const ProgressInfo& i) { cancel = i.done >= 10; }; // cancel mid-way
+    PackageOptions o;
+    o.inputs = {"other"};
+    EXPECT_THROW(
+        {
+            try {
+                writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, o, p);
+            } catch (const Error& e) {
+                EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+                throw;
+            }
+        },
+        Error);
+    std::ifstream in(tmp / "pkg" / "hlod.json");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), before);
+    // No temporary folder is left behind: only the package itself.
+    std::size_t entries = 0;
+    for (const auto& e : fs::directory_iterator(tmp.path()))
+        entries += e.path() != tmp / "pkg";
+    EXPECT_EQ(entries, 0u);
+}
+
+TEST(Package, AFileInTheWayIsAnErrorAndNothingIsWritten) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    hlod::test::writeFile(tmp / "pkg", "not a folder");
+    try {
+        writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Io);
+        EXPECT_NE(std::string(e.what()).find("pkg"), std::string::npos);
+    }
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(tmp.path()))
+        ++entries;
+    EXPECT_EQ(entries, 1u);
+}
+
+TEST(Package, GeoPlacementPutsTheRootOnTheEllipsoid) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    PackageOptions o;
+    o.geo = parseGeoLocation("57.7,11.97,10"); // Gothenburg
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, o);
+    const auto t = readJson(tmp / "pkg" / "tileset.json")["root"]["transform"];
+    ASSERT_EQ(t.size(), 16u);
+    const glm::dvec3 p(t[12], t[13], t[14]);
+    // WGS84 radius at 57.7° N lies between the polar (6356.8 km) and equatorial (6378.1 km).
+    EXPECT_GT(glm::length(p), 6356752.0);
+    EXPECT_LT(glm::length(p), 6378137.0 + 10.0);
+    EXPECT_NEAR(glm::length(glm::dvec3(t[8], t[9], t[10])), 1.0, 1e-12); // unit up axis
+    EXPECT_THROW(parseGeoLocation("91,0,0"), Error);
+    EXPECT_THROW(parseGeoLocation("1,2"), Error);
+}
+
+TEST(Package, UnsafeContentPathIsRefusedOnRead) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    nlohmann::json m = readJson(tmp / "pkg" / "hlod.json");
+    m["nodes"][0]["content"] = "../../etc/passwd";
+    std::ofstream(tmp / "pkg" / "hlod.json") << m.dump();
+    try {
+        readPackage(tmp / "pkg");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::UnsafePath);
+    }
+}
