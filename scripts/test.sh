@@ -5,6 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
+# npm packages of the package validation tests (Khronos glTF validator, 3D Tiles runtime).
+bash tests/web/install.sh
 BUILD_DIR=${HLOD_BUILD_DIR:-build}
 # Qt's OpenGL widgets need a real X server: Xvfb with Mesa's software rasteriser.
 export LIBGL_ALWAYS_SOFTWARE=1

@@ -190,6 +190,10 @@
         <source>%1: could not write the image</source>
         <translation>%1: bilden kunde inte skrivas</translation>
     </message>
+    <message>
+        <source>merged by opacity</source>
+        <translation>sammanslaget efter opacitet</translation>
+    </message>
 </context>
 <context>
     <name>RecentScenes</name>
@@ -278,6 +282,14 @@
     <message>
         <source>--size wants WIDTHxHEIGHT, at least 200x150, not &quot;%1&quot;</source>
         <translation>--size vill ha BREDDxHÖJD, minst 200x150, inte &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>Turn the initial view by AZ degrees around the up axis and tilt it by EL degrees, then fit.</source>
+        <translation>Vrid startvyn AZ grader runt uppåtaxeln och luta den EL grader, och anpassa den sedan.</translation>
+    </message>
+    <message>
+        <source>--orbit wants two angles in degrees, AZ,EL, not &quot;%1&quot;</source>
+        <translation>--orbit vill ha två vinklar i grader, AZ,EL, inte &quot;%1&quot;</translation>
     </message>
 </context>
 </TS>

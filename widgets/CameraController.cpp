@@ -56,12 +56,12 @@ void CameraController::orbit(double azimuth, double elevation) {
     const glm::dvec3 focal = get(camera_->GetFocalPoint());
     glm::dvec3 offset = get(camera_->GetPosition()) - focal;
     const double distance = glm::length(offset);
-    if (distance <= 0.0)
-        return;
+    if (distance <= 0.0) return;
     const glm::dvec3 u = up();
     offset = rotate(offset, u, azimuth);
     // Tilt, keeping the angle to the horizon inside the clamp so the view never flips.
-    const double current = glm::degrees(std::asin(std::clamp(glm::dot(offset, u) / distance, -1.0, 1.0)));
+    const double current =
+        glm::degrees(std::asin(std::clamp(glm::dot(offset, u) / distance, -1.0, 1.0)));
     const double target = std::clamp(current + elevation, -kMaxElevation, kMaxElevation);
     glm::dvec3 side = glm::cross(u, offset);
     if (glm::length(side) < 1e-12 * distance) {
@@ -77,8 +77,7 @@ void CameraController::orbit(double azimuth, double elevation) {
 }
 
 void CameraController::pan(double dx, double dy, int viewportHeight) {
-    if (viewportHeight <= 0)
-        return;
+    if (viewportHeight <= 0) return;
     const glm::dvec3 focal = get(camera_->GetFocalPoint());
     const glm::dvec3 eye = get(camera_->GetPosition());
     const double distance = glm::length(eye - focal);
@@ -94,14 +93,12 @@ void CameraController::pan(double dx, double dy, int viewportHeight) {
 }
 
 void CameraController::dolly(double factor) {
-    if (factor <= 0.0)
-        return;
+    if (factor <= 0.0) return;
     camera_->Dolly(factor);
 }
 
 void CameraController::fit(const std::array<double, 6>& bounds, double aspect, double margin) {
-    if (bounds[0] > bounds[1] || bounds[2] > bounds[3] || bounds[4] > bounds[5])
-        return;
+    if (bounds[0] > bounds[1] || bounds[2] > bounds[3] || bounds[4] > bounds[5]) return;
     std::vector<glm::dvec3> corners;
     for (int i = 0; i < 8; ++i)
         corners.emplace_back(bounds[(i & 1) ? 1 : 0], bounds[(i & 2) ? 3 : 2],
@@ -110,8 +107,7 @@ void CameraController::fit(const std::array<double, 6>& bounds, double aspect, d
 }
 
 void CameraController::fit(const std::vector<glm::dvec3>& points, double aspect, double margin) {
-    if (points.empty())
-        return;
+    if (points.empty()) return;
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& p : points) {
         lo = glm::min(lo, p);

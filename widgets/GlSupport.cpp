@@ -43,17 +43,16 @@ QSurfaceFormat viewportSurfaceFormat() {
 }
 
 bool formatIsSufficient(const QSurfaceFormat& format) {
-    if (format.renderableType() == QSurfaceFormat::OpenGLES)
-        return false;
+    if (format.renderableType() == QSurfaceFormat::OpenGLES) return false;
     return format.majorVersion() > 3 || (format.majorVersion() == 3 && format.minorVersion() >= 2);
 }
 
 QString glUnavailableMessage(const QString& detail) {
-    QString message = GlText::tr("OpenGL 3.2 is not available, so the 3D view cannot be shown. "
-                         "Use the hlod command-line tool for headless work, or run the editor "
-                         "on a machine with an OpenGL 3.2 driver (Mesa's llvmpipe is enough).");
-    if (!detail.isEmpty())
-        message += QStringLiteral("\n\n") + detail;
+    QString message =
+        GlText::tr("OpenGL 3.2 is not available, so the 3D view cannot be shown. "
+                   "Use the hlod command-line tool for headless work, or run the editor "
+                   "on a machine with an OpenGL 3.2 driver (Mesa's llvmpipe is enough).");
+    if (!detail.isEmpty()) message += QStringLiteral("\n\n") + detail;
     return message;
 }
 

@@ -29,8 +29,7 @@ void LogView::append(Level level, const QString& message) {
     }
     const QString time = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
     appendPlainText(QStringLiteral("%1  %2%3").arg(time, tag, message));
-    if (level == Level::Error)
-        Q_EMIT errorLogged(message);
+    if (level == Level::Error) Q_EMIT errorLogged(message);
 }
 
 } // namespace hlod::widgets

@@ -68,13 +68,13 @@ struct PolyBuilder {
 
     // Appends `mesh` transformed by `world` (identity for per-mesh data). `fallback` colours the
     // vertices of meshes without vertex colours when the builder stores colours.
-    void append(const Mesh& mesh, const glm::dmat4& world, const glm::vec4& fallback,
-                Id instance) {
+    void append(const Mesh& mesh, const glm::dmat4& world, const glm::vec4& fallback, Id instance) {
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         float* p = points->GetPointer(vertexCount * 3);
         float* n = normals->GetPointer(vertexCount * 3);
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            const glm::dvec3 wp = glm::dvec3(world * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
+            const glm::dvec3 wp =
+                glm::dvec3(world * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
             // Importers guarantee normals; a short array still must not read out of bounds.
             const glm::dvec3 local =
                 i < mesh.normals.size() ? glm::dvec3(mesh.normals[i]) : glm::dvec3(0, 0, 1);
@@ -104,8 +104,7 @@ struct PolyBuilder {
             off[cell] = cell * 3;
             for (int k = 0; k < 3; ++k)
                 conn[cell * 3 + k] = vertexCount + mesh.indices[3 * t + k];
-            if (withInstanceIds)
-                instanceIds->SetValue(cell, instance);
+            if (withInstanceIds) instanceIds->SetValue(cell, instance);
         }
         vertexCount += static_cast<vtkIdType>(mesh.positions.size());
         triangleCount += static_cast<vtkIdType>(triangles);
@@ -121,11 +120,9 @@ struct PolyBuilder {
         cells->SetData(offsets, connectivity);
         poly->SetPolys(cells);
         poly->GetPointData()->SetNormals(normals);
-        if (withColors)
-            poly->GetPointData()->SetScalars(colors);
+        if (withColors) poly->GetPointData()->SetScalars(colors);
         // Added, not made active: the mapper must not colour by instance id.
-        if (withInstanceIds)
-            poly->GetCellData()->AddArray(instanceIds);
+        if (withInstanceIds) poly->GetCellData()->AddArray(instanceIds);
         return poly;
     }
 };
@@ -157,10 +154,10 @@ glm::vec4 linearToDisplay(const glm::vec4& linear) {
 }
 
 int suggestedUpAxis(const Scene& scene) {
-    if (scene.sourceFiles.empty())
-        return 1;
-    const bool allCad = std::all_of(scene.sourceFiles.begin(), scene.sourceFiles.end(),
-                                    [](const auto& f) { return formatForPath(f) == SceneFormat::Cad; });
+    if (scene.sourceFiles.empty()) return 1;
+    const bool allCad =
+        std::all_of(scene.sourceFiles.begin(), scene.sourceFiles.end(),
+                    [](const auto& f) { return formatForPath(f) == SceneFormat::Cad; });
     return allCad ? 2 : 1;
 }
 
@@ -178,8 +175,7 @@ std::shared_ptr<SceneActors> SceneActors::build(const Scene& scene,
     for (Id i = 0; i < scene.instances.size(); ++i) {
         const Aabb b = scene.instanceBounds(i);
         result->triangleCount_ += scene.meshes[scene.instances[i].mesh].triangleCount();
-        if (b.empty())
-            continue;
+        if (b.empty()) continue;
         box.expand(b);
         for (int c = 0; c < 8; ++c)
             result->fitPoints_.emplace_back((c & 1) ? b.max.x : b.min.x,
@@ -196,8 +192,7 @@ void SceneActors::buildPerInstance(const Scene& scene) {
     for (Id i = 0; i < scene.instances.size(); ++i) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
-        if (mesh.triangleCount() == 0)
-            continue;
+        if (mesh.triangleCount() == 0) continue;
         if (!meshData[instance.mesh]) {
             PolyBuilder builder;
             builder.withColors = !mesh.colors.empty();
@@ -263,8 +258,7 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
         layout_ = Layout::PerMaterial;
         for (Id material = 0; material < byMaterial.size(); ++material) {
             const MergeGroup& group = byMaterial[material];
-            if (group.triangles == 0)
-                continue;
+            if (group.triangles == 0) continue;
             PolyBuilder builder;
             builder.withColors = group.anyColors;
             builder.withInstanceIds = true;
@@ -290,8 +284,7 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
     for (Id i = 0; i < scene.instances.size(); ++i)
         (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);
     for (MergeGroup* group : {&opaque, &translucent}) {
-        if (group->triangles == 0)
-            continue;
+        if (group->triangles == 0) continue;
         PolyBuilder builder;
         builder.withColors = true;
         builder.colorComponents = group == &translucent ? 4 : 3;
@@ -310,8 +303,7 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
 }
 
 const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
-    if (!actors_.empty() || parts_.empty())
-        return actors_;
+    if (!actors_.empty() || parts_.empty()) return actors_;
     actors_.reserve(parts_.size());
     for (const ScenePart& part : parts_) {
         vtkNew<vtkPolyDataMapper> mapper;
@@ -320,8 +312,7 @@ const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
         mapper->SetColorModeToDirectScalars();
         auto actor = vtkSmartPointer<vtkActor>::New();
         actor->SetMapper(mapper);
-        if (part.transform != glm::dmat4(1.0))
-            actor->SetUserMatrix(toVtk(part.transform));
+        if (part.transform != glm::dmat4(1.0)) actor->SetUserMatrix(toVtk(part.transform));
         applyLook(*actor, part);
         actors_.push_back(actor);
     }
@@ -329,15 +320,12 @@ const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
 }
 
 Id SceneActors::instanceOf(std::size_t part, vtkIdType cell) const {
-    if (part >= parts_.size() || cell < 0)
-        return kNoId;
+    if (part >= parts_.size() || cell < 0) return kNoId;
     const ScenePart& p = parts_[part];
-    if (cell >= p.polyData->GetNumberOfCells())
-        return kNoId;
-    if (p.instance != kNoId)
-        return p.instance;
-    auto* ids = vtkUnsignedIntArray::SafeDownCast(
-        p.polyData->GetCellData()->GetArray(kInstanceIdArray));
+    if (cell >= p.polyData->GetNumberOfCells()) return kNoId;
+    if (p.instance != kNoId) return p.instance;
+    auto* ids =
+        vtkUnsignedIntArray::SafeDownCast(p.polyData->GetCellData()->GetArray(kInstanceIdArray));
     return ids ? ids->GetValue(cell) : kNoId;
 }
 

@@ -8,13 +8,14 @@
 //    transformed to world in double and stored as float. VTK's per-actor overhead makes
 //    thousands of actors slow (TORCS has ~4400 instances); tens of actors render at full speed.
 //    With more than maxMergedParts materials, geometry is merged by opacity instead and the
-//    material colours go per vertex. Each cell keeps the id of the instance it came from in the cell array "InstanceId", so
-//    picking can map back to the scene.
+//    material colours go per vertex. Each cell keeps the id of the instance it came from in the
+//    cell array "InstanceId", so picking can map back to the scene.
 //
-// Colour: the material's effective colour (base colour times the texture's mean; linear, converted to sRGB for display since VTK does no
-// colour management); vertex colours, when a mesh has them, replace it.
-// Threading: build() creates only data objects and may run on a worker thread; actors() creates
-// the vtkActors and must run on the GUI thread.
+// Colour: the material's effective colour (base colour times the texture's mean), converted
+// from linear to sRGB since VTK does no colour management; vertex colours, when a mesh has
+// them, replace it.
+// Threading: build() creates only data objects and may run on a worker thread; actors()
+// creates the vtkActors and must run on the GUI thread.
 #pragma once
 
 #include <array>

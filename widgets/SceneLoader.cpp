@@ -37,8 +37,7 @@ SceneLoader::SceneLoader(QObject* parent) : QObject(parent) {
 SceneLoader::~SceneLoader() {
     for (auto& job : jobs_) {
         job->cancel = true;
-        if (job->thread.joinable())
-            job->thread.join();
+        if (job->thread.joinable()) job->thread.join();
     }
 }
 
@@ -71,15 +70,13 @@ void SceneLoader::run(Job* job, QStringList files) {
     progress.cancel = &job->cancel;
     progress.report = [this, id, post, lastReport](const ProgressInfo& info) {
         const auto now = Clock::now();
-        if (now - *lastReport < std::chrono::milliseconds(100))
-            return;
+        if (now - *lastReport < std::chrono::milliseconds(100)) return;
         *lastReport = now;
         const QString stage = QString::fromStdString(info.stage);
         const auto done = static_cast<qint64>(info.done);
         const auto total = static_cast<qint64>(info.total);
         post([this, id, stage, done, total] {
-            if (id == current_)
-                Q_EMIT progressed(stage, done, total);
+            if (id == current_) Q_EMIT progressed(stage, done, total);
         });
     };
 
@@ -102,7 +99,8 @@ void SceneLoader::run(Job* job, QStringList files) {
     } catch (const Error& e) {
         error = QString::fromStdString(e.what());
     } catch (const std::bad_alloc&) {
-        error = tr("%1: not enough memory to load this scene").arg(files.join(QStringLiteral(", ")));
+        error =
+            tr("%1: not enough memory to load this scene").arg(files.join(QStringLiteral(", ")));
     } catch (const std::exception& e) {
         error = QStringLiteral("%1: %2").arg(files.join(QStringLiteral(", ")),
                                              QString::fromStdString(e.what()));
@@ -112,8 +110,7 @@ void SceneLoader::run(Job* job, QStringList files) {
     const bool cancelled = job->cancel.load();
     post([this, id, result = std::move(result), error, cancelled, files] {
         finish(id);
-        if (id != current_ || cancelled)
-            return;
+        if (id != current_ || cancelled) return;
         current_ = 0;
         if (error.isEmpty())
             Q_EMIT loaded(result);
@@ -125,10 +122,8 @@ void SceneLoader::run(Job* job, QStringList files) {
 void SceneLoader::finish(std::uint64_t id) {
     // The worker's last act was posting this call, so joining it here waits for nothing.
     for (auto it = jobs_.begin(); it != jobs_.end(); ++it) {
-        if ((*it)->id != id)
-            continue;
-        if ((*it)->thread.joinable())
-            (*it)->thread.join();
+        if ((*it)->id != id) continue;
+        if ((*it)->thread.joinable()) (*it)->thread.join();
         jobs_.erase(it);
         --running_;
         return;

@@ -27,7 +27,7 @@ class SceneActors;
 struct LoadedScene {
     std::shared_ptr<const Scene> scene;
     std::shared_ptr<SceneActors> actors;
-    QStringList files;         // what load() was given; empty for the sample scene
+    QStringList files;          // what load() was given; empty for the sample scene
     double importSeconds = 0.0; // reading and converting the files
     double buildSeconds = 0.0;  // building the render data
 };

@@ -17,8 +17,7 @@ void SceneTreeModel::setScene(std::shared_ptr<const Scene> scene) {
         counts_.assign(n, {});
         rowInParent_.assign(n, 0);
         for (const MeshInstance& instance : scene_->instances) {
-            if (instance.node >= n || instance.mesh >= scene_->meshes.size())
-                continue;
+            if (instance.node >= n || instance.mesh >= scene_->meshes.size()) continue;
             counts_[instance.node].ownMeshes += 1;
             counts_[instance.node].ownTriangles += scene_->meshes[instance.mesh].triangleCount();
         }
@@ -59,46 +58,37 @@ Id SceneTreeModel::nodeOf(const QModelIndex& index) const {
 }
 
 QModelIndex SceneTreeModel::indexOfNode(Id node) const {
-    if (!scene_ || node >= scene_->nodes.size())
-        return {};
+    if (!scene_ || node >= scene_->nodes.size()) return {};
     return createIndex(node == 0 ? 0 : rowInParent_[node], 0, static_cast<quintptr>(node));
 }
 
 QModelIndex SceneTreeModel::index(int row, int column, const QModelIndex& parent) const {
     if (!scene_ || scene_->nodes.empty() || row < 0 || column < 0 || column >= ColumnCount)
         return {};
-    if (!parent.isValid())
-        return row == 0 ? createIndex(0, column, quintptr{0}) : QModelIndex();
+    if (!parent.isValid()) return row == 0 ? createIndex(0, column, quintptr{0}) : QModelIndex();
     const auto& children = scene_->nodes[nodeOf(parent)].children;
-    if (row >= static_cast<int>(children.size()))
-        return {};
+    if (row >= static_cast<int>(children.size())) return {};
     return createIndex(row, column, static_cast<quintptr>(children[row]));
 }
 
 QModelIndex SceneTreeModel::parent(const QModelIndex& child) const {
-    if (!child.isValid() || !scene_)
-        return {};
+    if (!child.isValid() || !scene_) return {};
     const Id parentNode = scene_->nodes[nodeOf(child)].parent;
-    if (parentNode == kNoId || parentNode >= scene_->nodes.size())
-        return {};
+    if (parentNode == kNoId || parentNode >= scene_->nodes.size()) return {};
     return indexOfNode(parentNode);
 }
 
 int SceneTreeModel::rowCount(const QModelIndex& parent) const {
-    if (!scene_ || scene_->nodes.empty())
-        return 0;
-    if (!parent.isValid())
-        return 1;
-    if (parent.column() != 0)
-        return 0;
+    if (!scene_ || scene_->nodes.empty()) return 0;
+    if (!parent.isValid()) return 1;
+    if (parent.column() != 0) return 0;
     return static_cast<int>(scene_->nodes[nodeOf(parent)].children.size());
 }
 
 int SceneTreeModel::columnCount(const QModelIndex&) const { return ColumnCount; }
 
 QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || !scene_)
-        return {};
+    if (!index.isValid() || !scene_) return {};
     const Id node = nodeOf(index);
     const Counts& c = counts_[node];
     const QLocale locale;
@@ -135,8 +125,7 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant SceneTreeModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
-        return {};
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
     switch (section) {
     case NameColumn:
         return tr("Node");

@@ -9,6 +9,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QResizeEvent>
+#include <QTimer>
 #include <QWheelEvent>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -43,7 +44,12 @@ Viewport::Viewport(QWidget* parent)
     renderer_->SetBackground(0.86, 0.88, 0.91);  // bottom
     renderer_->SetBackground2(0.36, 0.41, 0.50); // top
     renderer_->SetBackgroundAlpha(1.0);
-    renderer_->UseFXAAOn(); // cheap anti-aliasing: the context has no multisampling
+    // Anti-aliasing without a multisampled context; switched off while the camera moves (it
+    // costs about half of a frame on llvmpipe) and back on for the still frame.
+    renderer_->UseFXAAOn();
+    settleTimer_.setSingleShot(true);
+    settleTimer_.setInterval(250);
+    connect(&settleTimer_, &QTimer::timeout, this, [this] { setInteractive(false); });
     renderer_->SetTwoSidedLighting(true);
     renderer_->AutomaticLightCreationOff();
     // Key, fill and back lights that follow the camera: every side of an orbited model is lit.
@@ -77,17 +83,14 @@ void Viewport::onRenderWindowEvent(vtkObject*, unsigned long event, void* callDa
         // framebuffers is bound. QOpenGLWidget::makeCurrent() rebinds the widget's framebuffer
         // behind VTK's state cache (VTK would then attach its textures to Qt's framebuffer),
         // so only switch when another context is current (releasing resources outside paintGL).
-        if (context() && QOpenGLContext::currentContext() != context())
-            makeCurrent();
+        if (context() && QOpenGLContext::currentContext() != context()) makeCurrent();
         break;
     case vtkCommand::WindowIsCurrentEvent:
-        *static_cast<bool*>(callData) =
-            context() && QOpenGLContext::currentContext() == context();
+        *static_cast<bool*>(callData) = context() && QOpenGLContext::currentContext() == context();
         break;
     case vtkCommand::WindowFrameEvent:
         // A Render() started outside paintGL drew into VTK's buffer only: show it.
-        if (!inPaint_)
-            update();
+        if (!inPaint_) update();
         break;
     default:
         break;
@@ -116,8 +119,7 @@ void Viewport::initializeGL() {
 }
 
 void Viewport::releaseGraphics() {
-    if (!vtkReady_)
-        return;
+    if (!vtkReady_) return;
     makeCurrent();
     renderWindow_->Finalize();
     renderWindow_->SetReadyForRendering(false);
@@ -132,10 +134,8 @@ void Viewport::resizeGL(int w, int h) {
 
 void Viewport::resizeEvent(QResizeEvent* event) {
     QOpenGLWidget::resizeEvent(event);
-    if (message_)
-        message_->setGeometry(rect());
-    if (fitPending_ && width() > 0 && height() > 0)
-        fitView();
+    if (message_) message_->setGeometry(rect());
+    if (fitPending_ && width() > 0 && height() > 0) fitView();
 }
 
 void Viewport::paintGL() {
@@ -197,14 +197,12 @@ void Viewport::setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis, b
             renderer_->AddActor(actor);
     }
     controller_.setUpAxis(upAxis);
-    if (resetView)
-        this->resetView();
+    if (resetView) this->resetView();
     update();
 }
 
 void Viewport::clearScene() {
-    if (!actors_)
-        return;
+    if (!actors_) return;
     // Removing actors may release their GL buffers: VTK then asks for the context itself.
     renderer_->RemoveAllViewProps();
     actors_.reset();
@@ -216,8 +214,7 @@ double Viewport::aspect() const {
 }
 
 void Viewport::fitView() {
-    if (!actors_ || actors_->parts().empty())
-        return;
+    if (!actors_ || actors_->parts().empty()) return;
     // Before the first resize the widget has a placeholder size: fit again once it is real.
     fitPending_ = !isVisible();
     controller_.fit(actors_->fitPoints(), aspect());
@@ -250,8 +247,7 @@ void Viewport::cameraChanged() {
 }
 
 QImage Viewport::grabFrame() {
-    if (!glAvailable())
-        return {};
+    if (!glAvailable()) return {};
     return grabFramebuffer().convertToFormat(QImage::Format_RGB32);
 }
 
@@ -273,6 +269,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         return;
     }
     lastPos_ = event->position().toPoint();
+    setInteractive(true);
     event->accept();
 }
 
@@ -304,13 +301,24 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     drag_ = Drag::None;
+    setInteractive(false);
     event->accept();
+}
+
+void Viewport::setInteractive(bool interactive) {
+    if (interactive) {
+        settleTimer_.stop();
+        renderer_->UseFXAAOff();
+        return;
+    }
+    if (drag_ != Drag::None) return; // still dragging: the release restores quality
+    renderer_->UseFXAAOn();
+    update();
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
     const double notches = event->angleDelta().y() / 120.0;
-    if (notches != 0.0)
-        zoom(std::pow(kWheelZoom, notches));
+    if (notches != 0.0) zoom(std::pow(kWheelZoom, notches));
     event->accept();
 }
 

@@ -19,6 +19,7 @@
 #include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QTimer>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
@@ -42,8 +43,7 @@ public:
 
     // Replaces what is shown. `upAxis` (0 X, 1 Y, 2 Z) orients navigation; when `resetView`
     // is true the camera goes to the default direction and fits the new scene.
-    void setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis = 1,
-                        bool resetView = true);
+    void setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis = 1, bool resetView = true);
     void clearScene();
     const std::shared_ptr<SceneActors>& sceneActors() const { return actors_; }
 
@@ -88,6 +88,8 @@ private:
     void showGlProblem(const QString& detail);
     void clearAlpha();
     void cameraChanged();
+    // Fast frames (no anti-aliasing) while the user moves the camera.
+    void setInteractive(bool interactive);
     double aspect() const;
 
     vtkNew<vtkGenericOpenGLRenderWindow> renderWindow_;
@@ -103,6 +105,7 @@ private:
     int frames_ = 0;
     Drag drag_ = Drag::None;
     QPoint lastPos_;
+    QTimer settleTimer_; // ends the fast frames after the last wheel event
 };
 
 } // namespace hlod::widgets

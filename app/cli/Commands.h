@@ -12,6 +12,7 @@ using CommandArgs = std::vector<std::string>;
 
 int runInfo(const CommandArgs& args);
 int runCluster(const CommandArgs& args);
+int runBuild(const CommandArgs& args);
 
 struct CommandEntry {
     const char* name;

@@ -5,6 +5,13 @@
 
 namespace hlod::cli {
 
+ImportOptions importOptionsFromArgs(const Args& args) {
+    ImportOptions o;
+    o.cadRelativeDeflection = args.number("--deflection", o.cadRelativeDeflection, 1e-6, 0.5);
+    o.cadBrepUnitMetres = args.number("--brep-unit", o.cadBrepUnitMetres, 1e-9, 1e3);
+    return o;
+}
+
 LoadedScene loadSceneArgs(const std::vector<std::string>& positionals,
                           const ImportOptions& options) {
     LoadedScene out;

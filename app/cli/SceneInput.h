@@ -8,6 +8,7 @@
 
 #include <optional>
 
+#include "Args.h"
 #include "pipeline/export/Package.h"
 #include "pipeline/io/Import.h"
 
@@ -19,6 +20,11 @@ struct LoadedScene {
     std::uintmax_t fileBytes = 0;       // total size of the source files
     std::optional<PackageInfo> package; // set when the input is an exported HLOD package
 };
+
+// The import options every scene-reading command takes: --deflection R (CAD tessellation,
+// relative to the model diagonal) and --brep-unit M (metres per BREP unit; BREP has none).
+inline const std::set<std::string> kImportOptions{"--deflection", "--brep-unit"};
+ImportOptions importOptionsFromArgs(const Args& args);
 
 LoadedScene loadSceneArgs(const std::vector<std::string>& positionals,
                           const ImportOptions& options);

@@ -1,4 +1,5 @@
-// `hlod info [SCENE...] [--json] [--deflection R]`: counts, bounds and file size of a scene.
+// `hlod info [SCENE...] [--json] [--deflection R] [--brep-unit M]`: counts, bounds and file size of
+// a scene.
 #include <cstdio>
 #include <iostream>
 
@@ -96,11 +97,8 @@ void printText(const LoadedScene& loaded) {
 } // namespace
 
 int runInfo(const CommandArgs& argv) {
-    const Args args(argv, {"--deflection"}, {"--json"});
-    ImportOptions options;
-    options.cadRelativeDeflection =
-        args.number("--deflection", options.cadRelativeDeflection, 1e-6, 0.5);
-    const LoadedScene loaded = loadSceneArgs(args.positionals(), options);
+    const Args args(argv, kImportOptions, {"--json"});
+    const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
     if (args.has("--json")) {
         std::cout << toJson(loaded).dump(2) << "\n";
     } else {

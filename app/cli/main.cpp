@@ -14,9 +14,15 @@ namespace {
 using hlod::cli::CommandEntry;
 
 const CommandEntry kCommands[] = {
-    {"info", hlod::cli::runInfo, "hlod info [SCENE|DIR...] [--json] [--deflection R]"},
+    {"info", hlod::cli::runInfo,
+     "hlod info [SCENE|DIR|PACKAGE...] [--json] [--deflection R] [--brep-unit M]"},
     {"cluster", hlod::cli::runCluster,
      "hlod cluster SCENE [--volume sphere|aabb|octree|original] [--k K] [--max-children N] "
+     "[--json]"},
+    {"build", hlod::cli::runBuild,
+     "hlod build SCENE -o DIR [--volume sphere|aabb|octree|original] [--k K] "
+     "[--max-children N] [--proxy decimate|remesh|sloppy] [--screen-size PX] [--pixel-error PX] "
+     "[--fov DEG] [--viewport-height PX] [--threads N] [--cache DIR] [--no-cache] [--no-dlod] "
      "[--json]"},
 };
 

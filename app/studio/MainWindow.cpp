@@ -39,8 +39,7 @@ using hlod::widgets::LoadedScene;
 namespace {
 
 QString sceneName(const QStringList& files) {
-    if (files.isEmpty())
-        return QCoreApplication::translate("MainWindow", "Sample scene");
+    if (files.isEmpty()) return QCoreApplication::translate("MainWindow", "Sample scene");
     return RecentScenes::label(files);
 }
 
@@ -95,8 +94,7 @@ MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
     if (viewport_)
         connect(viewport_, &hlod::widgets::Viewport::glFailed, log_,
                 [this](const QString& m) { log_->error(m); });
-    if (!glProblem_.isEmpty())
-        log_->error(glProblem_);
+    if (!glProblem_.isEmpty()) log_->error(glProblem_);
 }
 
 MainWindow::~MainWindow() = default;
@@ -183,8 +181,8 @@ void MainWindow::rebuildRecentMenu() {
     for (int i = 0; i < entries.size(); ++i) {
         const QStringList files = entries[i];
         QAction* action = recentMenu_->addAction(
-            QStringLiteral("&%1 %2").arg(i + 1).arg(RecentScenes::label(files)),
-            this, [this, files] { openFiles(files); });
+            QStringLiteral("&%1 %2").arg(i + 1).arg(RecentScenes::label(files)), this,
+            [this, files] { openFiles(files); });
         action->setToolTip(files.join(QLatin1Char('\n')));
         action->setStatusTip(files.join(QStringLiteral(", ")));
     }
@@ -214,14 +212,12 @@ void MainWindow::openDialog() {
     const QString dir =
         sceneFiles_.isEmpty() ? QDir::homePath() : QFileInfo(sceneFiles_.front()).absolutePath();
     const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open Scene"), dir, filter);
-    if (!files.isEmpty())
-        openFiles(files);
+    if (!files.isEmpty()) openFiles(files);
 }
 
 void MainWindow::openFolderDialog() {
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Open Folder as Scene"));
-    if (!dir.isEmpty())
-        openFiles({dir});
+    if (!dir.isEmpty()) openFiles({dir});
 }
 
 void MainWindow::showAbout() {
@@ -239,19 +235,17 @@ void MainWindow::showAbout() {
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
     const QList<QUrl> urls = event->mimeData()->urls();
-    const bool local = !urls.isEmpty() &&
-                       std::all_of(urls.begin(), urls.end(), [](const QUrl& u) { return u.isLocalFile(); });
-    if (local)
-        event->acceptProposedAction();
+    const bool local = !urls.isEmpty() && std::all_of(urls.begin(), urls.end(), [](const QUrl& u) {
+        return u.isLocalFile();
+    });
+    if (local) event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
     QStringList files;
     for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile())
-            files << url.toLocalFile();
-    if (files.isEmpty())
-        return;
+        if (url.isLocalFile()) files << url.toLocalFile();
+    if (files.isEmpty()) return;
     event->acceptProposedAction();
     openFiles(files);
 }
@@ -291,8 +285,7 @@ void MainWindow::onLoadProgress(const QString& stage, qint64 done, qint64 total)
         busyBar_->setRange(0, 1000);
         busyBar_->setValue(static_cast<int>(1000.0 * static_cast<double>(done) / total));
     }
-    if (!stage.isEmpty())
-        busyBar_->setToolTip(stage);
+    if (!stage.isEmpty()) busyBar_->setToolTip(stage);
 }
 
 void MainWindow::onLoaded(const LoadedScene& result) {
@@ -326,8 +319,7 @@ void MainWindow::onLoaded(const LoadedScene& result) {
     }
     updateTitle();
     updateCounts();
-    if (!screenshotPath_.isEmpty())
-        QTimer::singleShot(0, this, [this] { takeScreenshot(100); });
+    if (!screenshotPath_.isEmpty()) QTimer::singleShot(0, this, [this] { takeScreenshot(100); });
 }
 
 void MainWindow::onLoadFailed(const QStringList& files, const QString& message) {
@@ -341,8 +333,7 @@ void MainWindow::onLoadFailed(const QStringList& files, const QString& message) 
 }
 
 void MainWindow::onFrameRendered() {
-    if (!firstFramePending_)
-        return;
+    if (!firstFramePending_) return;
     firstFramePending_ = false;
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - shownAt_)
@@ -393,13 +384,16 @@ void MainWindow::takeScreenshot(int attemptsLeft) {
         return;
     }
     if (!viewport_) {
-        exitScreenshotMode(1, glProblem_);
+        // No 3D view: still save what the user would see, then report the missing OpenGL.
+        if (!grab().toImage().save(screenshotPath_))
+            exitScreenshotMode(1, tr("%1: could not write the image").arg(screenshotPath_));
+        else
+            exitScreenshotMode(2, glProblem_);
         return;
     }
     // grabFrame() renders the current scene synchronously, so the image is up to date.
     QImage image = viewport_->grabFrame();
-    if (!screenshotViewportOnly_)
-        image = grab().toImage();
+    if (!screenshotViewportOnly_) image = grab().toImage();
     if (image.isNull()) {
         exitScreenshotMode(1, tr("%1: nothing was rendered").arg(screenshotPath_));
         return;

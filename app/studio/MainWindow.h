@@ -6,7 +6,8 @@
 // Loading runs on a worker thread (widgets::SceneLoader); failures go to a message box and the
 // log, and the previous scene stays open.
 // Screenshot mode (--screenshot) waits until the scene is loaded and rendered, saves the image
-// and quits with exit code 0, or 1 with a message on stderr when loading or saving fails.
+// and quits with exit code 0, or 1 with a message on stderr when loading or saving fails, or 2
+// without OpenGL (after saving the window as it looks then).
 #pragma once
 
 #include <chrono>

@@ -14,16 +14,13 @@ RecentScenes::RecentScenes() {
     const QVariantList stored = QSettings().value(kKey).toList();
     for (const QVariant& value : stored) {
         const QStringList files = value.toStringList();
-        if (!files.isEmpty() && QFileInfo::exists(files.front()))
-            entries_.push_back(files);
-        if (entries_.size() == kMaxEntries)
-            break;
+        if (!files.isEmpty() && QFileInfo::exists(files.front())) entries_.push_back(files);
+        if (entries_.size() == kMaxEntries) break;
     }
 }
 
 void RecentScenes::add(const QStringList& files) {
-    if (files.isEmpty())
-        return;
+    if (files.isEmpty()) return;
     entries_.removeAll(files);
     entries_.prepend(files);
     while (entries_.size() > kMaxEntries)
@@ -37,11 +34,9 @@ void RecentScenes::clear() {
 }
 
 QString RecentScenes::label(const QStringList& files) {
-    if (files.isEmpty())
-        return {};
+    if (files.isEmpty()) return {};
     const QString first = QFileInfo(files.front()).fileName();
-    if (files.size() == 1)
-        return first;
+    if (files.size() == 1) return first;
     const int more = static_cast<int>(files.size() - 1);
     return QCoreApplication::translate("RecentScenes", "%1 + %n more", nullptr, more).arg(first);
 }

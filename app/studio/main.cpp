@@ -5,15 +5,16 @@
 //
 // With no file the embedded sample scene opens. --screenshot waits until the scene is loaded
 // and rendered, saves the window (or only the 3D view) and exits: 0 on success, 1 when loading
-// or saving fails, 2 when OpenGL is unavailable or the arguments are wrong.
+// or saving fails, 2 when the arguments are wrong or OpenGL is unavailable (then the image shows
+// the window with its explanation in place of the 3D view).
 #include <cstdio>
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QLibraryInfo>
 #include <QLocale>
-#include <QRegularExpression>
 #include <QPointF>
+#include <QRegularExpression>
 #include <QSurfaceFormat>
 #include <QTranslator>
 
@@ -26,8 +27,7 @@ void installTranslators(QApplication& app) {
     // Swedish is the one translation we ship; Qt's own strings (dialog buttons) come from the
     // system's Qt translations when installed.
     const QLocale locale;
-    if (locale.language() != QLocale::Swedish)
-        return;
+    if (locale.language() != QLocale::Swedish) return;
     auto* qt = new QTranslator(&app);
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
@@ -58,14 +58,15 @@ bool parseOptions(QApplication& app, Options& options) {
         QStringLiteral("[FILES...]"));
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QCoreApplication::translate("main", "Save a screenshot once loaded and rendered, then quit."),
+        QCoreApplication::translate("main",
+                                    "Save a screenshot once loaded and rendered, then quit."),
         QStringLiteral("OUT.png"));
     const QCommandLineOption viewportOnly(
         QStringLiteral("viewport-only"),
         QCoreApplication::translate("main", "With --screenshot: save only the 3D view."));
-    const QCommandLineOption size(
-        QStringLiteral("size"), QCoreApplication::translate("main", "Window size in pixels."),
-        QStringLiteral("WxH"));
+    const QCommandLineOption size(QStringLiteral("size"),
+                                  QCoreApplication::translate("main", "Window size in pixels."),
+                                  QStringLiteral("WxH"));
     const QCommandLineOption orbit(
         QStringLiteral("orbit"),
         QCoreApplication::translate("main", "Turn the initial view by AZ degrees around the up "
@@ -128,23 +129,17 @@ int main(int argc, char* argv[]) {
     installTranslators(app);
 
     Options options;
-    if (!parseOptions(app, options))
-        return 2;
+    if (!parseOptions(app, options)) return 2;
 
     const hlod::widgets::GlProbeResult gl = hlod::widgets::probeOpenGl();
     const QString glProblem = gl.ok ? QString() : hlod::widgets::glUnavailableMessage(gl.problem);
-    if (!gl.ok && !options.screenshot.isEmpty()) {
-        std::fprintf(stderr, "hlod-studio: %s\n", qPrintable(glProblem));
-        return 2;
-    }
 
     MainWindow window(glProblem);
     if (!options.screenshot.isEmpty())
         window.requestScreenshot(options.screenshot, options.viewportOnly);
     else
         window.restoreSettings();
-    if (options.size.isValid())
-        window.resize(options.size);
+    if (options.size.isValid()) window.resize(options.size);
     window.setInitialOrbit(options.orbit.x(), options.orbit.y());
     window.show();
     window.openFiles(options.files);

@@ -15,10 +15,6 @@ namespace hlod {
 
 namespace {
 
-// Lower bounds are scaled by this so a few ulps of rounding in either the bound or the real
-// cost cannot prune a candidate that ties the best one.
-constexpr double kBoundSafety = 1.0 - 1e-9;
-
 Aabb hull(const Aabb& a, const Aabb& b) {
     return Aabb{glm::min(a.min, b.min), glm::max(a.max, b.max)};
 }
@@ -56,14 +52,6 @@ CostModel::CostModel(VolumeType volume, double k) : volume_(volume), k_(k) {
     if (!(k >= 0.0) || !std::isfinite(k)) {
         throw Error(ErrorCode::InvalidArgument, "proportion exponent k must be >= 0");
     }
-}
-
-double CostModel::powK(double ratio) const {
-    // Exact for the thesis' k = 0, 1, 2 and cheaper than pow().
-    if (k_ == 0.0) return 1.0;
-    if (k_ == 1.0) return ratio;
-    if (k_ == 2.0) return ratio * ratio;
-    return std::pow(ratio, k_);
 }
 
 double CostModel::costOf(const Sphere& s, const Aabb& box, double volume, double fv) const {
@@ -139,33 +127,7 @@ int CostModel::sizeClass(const ClusterUnit& u) const {
 }
 
 double CostModel::lowerBound(const ClusterUnit& x, const Region& g) const {
-    // cost = V_AB^2 / fv_AB * shape, with fv_AB <= min(V_AB, fv_x + fv_g) (clamp above), so
-    // cost >= V_AB * max(1, V_AB / (fv_x + maxFv)) * shape, increasing in V_AB: it suffices to
-    // bound V_AB (and the shape factor) from below.
-    const double fvSum = x.fv + g.maxFv;
-    if (volume_ == VolumeType::Sphere) {
-        // The merged sphere holds x's ball and g's ball (radius >= minRadius, inside the box).
-        // When x's centre is outside the box (distance d > 0) g's farthest point is at least
-        // d + 2 minRadius away, else at least minRadius; the diameter is at least that plus
-        // r_x.
-        const glm::dvec3 c = x.sphere.center;
-        const double d = glm::length(glm::clamp(c, g.box.min, g.box.max) - c);
-        const double far = d > 0.0 ? d + 2.0 * g.minRadius : g.minRadius;
-        const double r = std::max({x.sphere.radius, g.minRadius, (far + x.sphere.radius) * 0.5});
-        const double v = 4.0 / 3.0 * std::numbers::pi * r * r * r;
-        return r * r * r * std::max(1.0, v / fvSum) * kBoundSafety;
-    }
-    // The merged box holds x's box, a point of the region (per axis: x's extent plus the gap)
-    // and g's box (at least minExtent per axis, minVolume in all); it lies in the hull of x
-    // and the region.
-    const glm::dvec3 lbExt = glm::max(
-        glm::max(x.box.max, g.box.min) - glm::min(x.box.min, g.box.max), g.minExtent);
-    const glm::dvec3 ubExt = glm::max(x.box.max, g.box.max) - glm::min(x.box.min, g.box.min);
-    const double v = std::max(lbExt.x * lbExt.y * lbExt.z, g.minVolume);
-    const double shape =
-        std::max(1.0, std::max({lbExt.x, lbExt.y, lbExt.z}) / std::min({ubExt.x, ubExt.y,
-                                                                        ubExt.z}));
-    return v * std::max(1.0, v / fvSum) * powK(shape) * kBoundSafety;
+    return BoundQuery(*this, x)(g);
 }
 
 } // namespace hlod

@@ -26,6 +26,9 @@
 // volume recomputation and the fill is fv / volume.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "pipeline/bounds/Sphere.h"
 #include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/scene/Aabb.h"
@@ -96,7 +99,17 @@ private:
     };
     Eval evaluate(const ClusterUnit& lo, const ClusterUnit& hi, const Sphere& sphere,
                   const Aabb& box) const;
-    double powK(double ratio) const;
+
+public:
+    // ratio^k; exact for the thesis' k = 0, 1, 2 and cheaper than pow() there.
+    double powK(double ratio) const {
+        if (k_ == 0.0) return 1.0;
+        if (k_ == 1.0) return ratio;
+        if (k_ == 2.0) return ratio * ratio;
+        return std::pow(ratio, k_);
+    }
+
+private:
 
     VolumeType volume_;
     double k_;
@@ -104,5 +117,68 @@ private:
 
 // Box `b` grown about its centre so that every extent is at least `minExtent`.
 Aabb padBox(const Aabb& b, double minExtent);
+
+// Lower bound of the hull length of the interval [a, b] and an interval of length >= w that
+// lies inside [lo, hi] (starting at some c in [lo, hi - w]): the hull max(b, c + w) - min(a, c)
+// is at least b - a, w, (lo + w) - a and b - (hi - w). Branch-free: it runs in the inner loop
+// of every search.
+inline double minHullLength(double a, double b, double lo, double hi, double w) {
+    return std::max(std::max(b - a, w), std::max(lo + w - a, b - hi + w));
+}
+
+// CostModel::lowerBound for one cluster x against many regions, inline for the searches' inner
+// loop. Why it is a bound: cost = V_AB^2 / fv_AB * shape with fv_AB <= min(V_AB, fv_x + fv_g)
+// (the clamp), so cost >= V_AB * max(1, V_AB / (fv_x + maxFv)) * shape, increasing in V_AB:
+// a lower bound of V_AB (and of the shape factor) gives one of the cost.
+// - Sphere: the merged sphere holds x's ball and g's ball (radius >= minRadius, inside the
+//   box). When x's centre is outside the box (distance d > 0) g's farthest point is at least
+//   d + 2 minRadius away, else at least minRadius away; the diameter is at least that plus r_x.
+// - Box: per axis the merged box holds x's interval and g's, which is at least minExtent long
+//   and lies inside the region (minHullLength); its volume is also at least minVolume; the
+//   merged box lies in the hull of x and the region, which bounds the shape ratio.
+// The result is scaled by 1 - 1e-9 so rounding can never make it exceed a real cost (a tie
+// with the best candidate must not be pruned).
+class BoundQuery {
+public:
+    BoundQuery(const CostModel& model, const ClusterUnit& x)
+        : model_(model), x_(x), sphere_(model.volume() == VolumeType::Sphere),
+          hasShape_(model.k() != 0.0) {}
+
+    double operator()(const Region& g) const {
+        constexpr double kSafety = 1.0 - 1e-9;
+        const double fvSum = x_.fv + g.maxFv;
+        if (sphere_) {
+            const glm::dvec3 c = x_.sphere.center;
+            const glm::dvec3 q = glm::clamp(c, g.box.min, g.box.max) - c;
+            const double d2 = glm::dot(q, q);
+            const double far = d2 > 0.0 ? std::sqrt(d2) + 2.0 * g.minRadius : g.minRadius;
+            const double r =
+                std::max(std::max(x_.sphere.radius, g.minRadius), (far + x_.sphere.radius) * 0.5);
+            const double r3 = r * r * r;
+            return r3 * std::max(1.0, kSphereVolume * r3 / fvSum) * kSafety;
+        }
+        const double ex = minHullLength(x_.box.min.x, x_.box.max.x, g.box.min.x, g.box.max.x,
+                                        g.minExtent.x);
+        const double ey = minHullLength(x_.box.min.y, x_.box.max.y, g.box.min.y, g.box.max.y,
+                                        g.minExtent.y);
+        const double ez = minHullLength(x_.box.min.z, x_.box.max.z, g.box.min.z, g.box.max.z,
+                                        g.minExtent.z);
+        const double v = std::max(ex * ey * ez, g.minVolume);
+        double bound = v * std::max(1.0, v / fvSum) * kSafety;
+        if (hasShape_) {
+            const glm::dvec3 ub = glm::max(x_.box.max, g.box.max) - glm::min(x_.box.min, g.box.min);
+            const double shape = std::max(ex, std::max(ey, ez)) / std::min(ub.x, std::min(ub.y, ub.z));
+            bound *= model_.powK(std::max(1.0, shape));
+        }
+        return bound;
+    }
+
+private:
+    static constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
+    const CostModel& model_;
+    const ClusterUnit& x_;
+    bool sphere_;
+    bool hasShape_;
+};
 
 } // namespace hlod

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 #include <queue>
 
 #include <tbb/blocked_range.h>
@@ -71,14 +72,15 @@ public:
         seen_.assign(n, 0);
     }
 
-    // Cheapest partners of all units (budget-free), in parallel.
-    std::vector<Candidate> initialCandidates() const {
-        std::vector<Candidate> out(units_.size());
-        tbb::parallel_for(tbb::blocked_range<std::uint32_t>(
-                              0, static_cast<std::uint32_t>(units_.size()), 64),
-                          [&](const tbb::blocked_range<std::uint32_t>& r) {
-                              for (std::uint32_t i = r.begin(); i < r.end(); ++i) {
-                                  out[i] = cheapestPartner(i, kInf, nullptr);
+    // Cheapest partner of every unit in `which` (indices into the level's units) with cost
+    // <= budget, in parallel; the result is aligned with `which`.
+    std::vector<Candidate> cheapestPartners(const std::vector<std::uint32_t>& which,
+                                            double budget) const {
+        std::vector<Candidate> out(which.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                                  out[i] = cheapestPartner(which[i], budget, nullptr);
                               }
                           });
         return out;
@@ -148,7 +150,7 @@ private:
         best.group = g;
         std::uint32_t stamp = 0;
         if (seen) stamp = ++stamp_;
-        auto bound = [&](const Region& r) { return model_.lowerBound(G.unit, r); };
+        const BoundQuery bound(model_, G.unit);
         auto visit = [&](std::uint32_t item) {
             const std::uint32_t h = groupOf_[item];
             if (h == g) return;
@@ -158,6 +160,8 @@ private:
             }
             const Group& H = groups_[h];
             if (G.size + H.size > cap_) return;
+            // The bound of H alone is much cheaper than the exact cost (no overlap volume).
+            if (bound(model_.regionOf(H.unit)) > best.cost) return;
             const bool gLow = G.key < H.key;
             const Id lo = gLow ? G.key : H.key;
             const Id hi = gLow ? H.key : G.key;
@@ -222,8 +226,15 @@ double lowerMedian(const std::vector<Candidate>& candidates) {
 
 } // namespace
 
-Id mergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
-               const Progress& progress) {
+std::vector<std::size_t> budgetSample(std::size_t units, std::size_t sampleSize) {
+    const std::size_t s = std::min(units, std::max<std::size_t>(sampleSize, 1));
+    std::vector<std::size_t> out(s);
+    for (std::size_t i = 0; i < s; ++i) out[i] = i * units / s;
+    return out;
+}
+
+Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
+                   const Progress& progress, const LevelMergeOptions& options) {
     if (maxChildren < 2) {
         throw Error(ErrorCode::InvalidArgument, "max children must be at least 2");
     }
@@ -232,14 +243,27 @@ Id mergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     double budget = 0.0;
     while (units.size() > 1) {
         progress.throwIfCancelled();
+        std::sort(units.begin(), units.end());
         Level level(builder, units, maxChildren);
-        const std::vector<Candidate> initial = level.initialCandidates();
-        budget = std::max(budget, lowerMedian(initial));
-        level.run(initial, budget, progress);
+        // Budget from the sample's cheapest partners, then every unit's cheapest partner
+        // within the budget (a bounded search: units without one are discarded quickly).
+        std::vector<std::uint32_t> which;
+        for (std::size_t i : budgetSample(units.size(), options.budgetSample)) {
+            which.push_back(static_cast<std::uint32_t>(i));
+        }
+        budget = std::max(budget, lowerMedian(level.cheapestPartners(which, kInf)));
+        which.resize(units.size());
+        std::iota(which.begin(), which.end(), 0u);
+        level.run(level.cheapestPartners(which, budget), budget, progress);
         units = level.finish();
         progress.emit(ProgressInfo{"cluster", total - (units.size() - 1), total, ""});
     }
     return units[0];
+}
+
+Id mergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
+               const Progress& progress) {
+    return mergeLevelsWith(builder, std::move(units), maxChildren, progress, LevelMergeOptions{});
 }
 
 } // namespace hlod

@@ -6,9 +6,13 @@
 //
 // The rule. Input: a set U of units (tree nodes with a ClusterUnit), maxChildren >= 2.
 // 1. Levels. While |U| > 1, run one level over U (thesis: one ADDLEVEL per iteration).
-// 2. Budget. For each u in U, best(u) = min over v in U, v != u, of cost(u, v). Q is the lower
-//    median of these values (element floor((|U| - 1) / 2) in ascending order) and the level's
-//    budget is B = max(B_previous, Q), B_previous = 0 before the first level. The thesis merges
+// 2. Budget. For each u in U, best(u) = min over v in U, v != u, of cost(u, v). Take the
+//    sample of U: with U in ascending id order u_0 < ... < u_{m-1} and s = min(m, S) (S =
+//    LevelMergeOptions::budgetSample, 1024), the units u_floor(i m / s) for i = 0..s-1 (all of
+//    U when m <= S). Q is the lower median of best() over the sample (element floor((s-1)/2)
+//    in ascending order) and the level's budget is B = max(B_previous, Q), B_previous = 0
+//    before the first level. (The sample keeps the budget's cost independent of |U|: only the
+//    sampled units need an unbounded cheapest-partner search; the others search within B.) The thesis merges
 //    "cheapest first" along the MST of each level but leaves open when a level stops; UE4's
 //    implementation of the same algorithm stops each level at a fixed cost per level. A fixed
 //    schedule either wastes levels or merges half the scene at once depending on the scene's
@@ -50,11 +54,20 @@
 
 namespace hlod {
 
+struct LevelMergeOptions {
+    std::size_t budgetSample = 1024; // S of rule 2 (>= 1; tests use small values)
+};
+
 // Clusters `units` (node ids of `builder`, each unit once) into one tree and returns its root
 // (the unit itself when there is one; kNoId when there are none). New inner nodes are appended
 // to `builder`. `maxChildren` >= 2. Reports progress as stage "cluster" and throws
 // Error(Cancelled) when the cancel flag is raised.
 Id mergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
                const Progress& progress = {});
+Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
+                   const Progress& progress, const LevelMergeOptions& options);
+
+// Positions (into units sorted by id) of the budget sample of rule 2.
+std::vector<std::size_t> budgetSample(std::size_t units, std::size_t sampleSize);
 
 } // namespace hlod

@@ -65,10 +65,17 @@ template <class Bound, class Visit>
 void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) const {
     // Hierarchies in increasing order of their root bound: the likely answers come first and
     // lower the threshold for the rest.
-    std::vector<std::pair<double, std::uint32_t>> roots;
-    roots.reserve(roots_.size());
-    for (std::uint32_t r : roots_) roots.emplace_back(bound(nodes_[r].region), r);
-    std::sort(roots.begin(), roots.end());
+    std::array<std::pair<double, std::uint32_t>, 64> local;
+    std::vector<std::pair<double, std::uint32_t>> heapRoots;
+    std::pair<double, std::uint32_t>* roots = local.data();
+    if (roots_.size() > local.size()) {
+        heapRoots.resize(roots_.size());
+        roots = heapRoots.data();
+    }
+    for (std::size_t i = 0; i < roots_.size(); ++i) {
+        roots[i] = {bound(nodes_[roots_[i]].region), roots_[i]};
+    }
+    std::sort(roots, roots + roots_.size());
     // Median splits keep each depth below 40 for any item count that fits in memory; each
     // level pushes at most one deferred sibling.
     struct Entry {
@@ -76,7 +83,8 @@ void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) con
         double lb;
     };
     std::array<Entry, 96> stack;
-    for (const auto& [rootBound, root] : roots) {
+    for (std::size_t i = 0; i < roots_.size(); ++i) {
+        const auto [rootBound, root] = roots[i];
         if (rootBound > threshold) break;
         std::size_t top = 0;
         stack[top++] = Entry{root, rootBound};

@@ -7,14 +7,20 @@
 // Units: the XCAF readers convert every entity to the document's length unit (millimetres
 // unless "xstep.cascade.unit" says otherwise); XCAFDoc_DocumentTool::GetLengthUnit tells that
 // unit in metres and we scale by it. BREP has no unit field: options.cadBrepUnitMetres.
-// Errors: every OCCT failure (Standard_Failure) and std::exception becomes hlod::Error.
+// Errors: every OCCT failure (Standard_Failure) and std::exception becomes hlod::Error; a
+// fault signal inside OCCT (it dereferences null handles on some corrupt STEP files) becomes
+// an error through CadCrashGuard, and BREP is parsed from a stream that throws on a failed
+// read (OCCT can otherwise loop forever at the end of corrupt data).
 // OCCT's own console messages are switched off: the pipeline never prints.
 #include <cctype>
 #include <cmath>
+#include <fstream>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <streambuf>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +44,7 @@
 #include <XCAFDoc_DocumentTool.hxx>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/io/CadCrashGuard.h"
 #include "pipeline/io/CadTessellation.h"
 #include "pipeline/io/CadXcaf.h"
 #include "pipeline/io/Import.h"
@@ -54,15 +61,14 @@ CadKind kindOf(const fs::path& file) {
     std::string ext = file.extension().string();
     for (char& c : ext)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".iges" || ext == ".igs")
-        return CadKind::Iges;
-    if (ext == ".brep" || ext == ".brp")
-        return CadKind::Brep;
+    if (ext == ".iges" || ext == ".igs") return CadKind::Iges;
+    if (ext == ".brep" || ext == ".brp") return CadKind::Brep;
     return CadKind::Step;
 }
 
 // The XSControl readers keep global state (static parameters, the work session, the XCAF
-// application's document list), so reads from several threads take turns here.
+// application's document list) and std::cout is swapped while they run (QuietStdout), so
+// reads from several threads take turns here.
 std::mutex& readerMutex() {
     static std::mutex m;
     return m;
@@ -76,6 +82,25 @@ void silenceOcct() {
         Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
     });
 }
+
+// Some OCCT 7.6 parsers write straight to std::cout (BRepTools::Read: "Not a surface table",
+// "File was not written with this version of the topology"), bypassing the messenger. While
+// a reader runs (under readerMutex), std::cout writes into a buffer that drops everything.
+class QuietStdout {
+public:
+    QuietStdout() : previous_(std::cout.rdbuf(&sink_)) {}
+    ~QuietStdout() { std::cout.rdbuf(previous_); }
+    QuietStdout(const QuietStdout&) = delete;
+    QuietStdout& operator=(const QuietStdout&) = delete;
+
+private:
+    struct Sink : std::streambuf {
+        int overflow(int c) override { return traits_type::not_eof(c); }
+        std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+    };
+    Sink sink_;
+    std::streambuf* previous_;
+};
 
 std::string statusText(IFSelect_ReturnStatus status) {
     switch (status) {
@@ -97,13 +122,13 @@ std::string statusText(IFSelect_ReturnStatus status) {
 class XcafDocument {
 public:
     XcafDocument() {
+        const std::lock_guard lock(readerMutex());
         app_ = XCAFApp_Application::GetApplication();
         app_->NewDocument("MDTV-XCAF", doc_);
     }
     ~XcafDocument() {
         const std::lock_guard lock(readerMutex());
-        if (!doc_.IsNull() && doc_->IsOpened())
-            app_->Close(doc_);
+        if (!doc_.IsNull() && doc_->IsOpened()) app_->Close(doc_);
     }
     XcafDocument(const XcafDocument&) = delete;
     XcafDocument& operator=(const XcafDocument&) = delete;
@@ -135,8 +160,7 @@ void readXcaf(const fs::path& file, CadKind kind, Handle(TDocStd_Document) & doc
         if (reader.NbRootsForTransfer() <= 0) {
             fail(std::string(format) + " file has no transferable roots (no product or shape)");
         }
-        if (!reader.Transfer(doc))
-            fail(std::string(format) + " transfer to shapes failed");
+        if (!reader.Transfer(doc)) fail(std::string(format) + " transfer to shapes failed");
     };
     if (kind == CadKind::Iges) {
         IGESCAFControl_Reader reader;
@@ -161,13 +185,19 @@ double documentUnitMetres(const Handle(TDocStd_Document) & doc) {
 }
 
 Scene importXcaf(const fs::path& file, CadKind kind, const ImportOptions& options) {
-    std::unique_ptr<XcafDocument> document;
+    XcafDocument document;
     {
+        // Outside the guarded call: a fault abandons its frames without unlocking/restoring.
         const std::lock_guard lock(readerMutex());
-        document = std::make_unique<XcafDocument>();
-        readXcaf(file, kind, document->get());
+        const QuietStdout quiet;
+        cad::runGuarded([&] { readXcaf(file, kind, document.get()); });
     }
-    return cad::sceneFromXcaf(document->get(), documentUnitMetres(document->get()), options, file);
+    Scene scene;
+    cad::runGuarded([&] {
+        scene =
+            cad::sceneFromXcaf(document.get(), documentUnitMetres(document.get()), options, file);
+    });
+    return scene;
 }
 
 // The pieces a BREP file is split into: its solids, then shells outside solids, then faces
@@ -186,10 +216,23 @@ std::vector<TopoDS_Shape> brepItems(const TopoDS_Shape& shape) {
     return items;
 }
 
+// Reads from a stream that throws once a read fails: OCCT 7.6's BRepTools_ShapeSet loops
+// forever on some corrupt files (a changed curve representation code) reading past the end
+// of the data, because it never checks the stream state.
 TopoDS_Shape readBrep(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(ErrorCode::FileUnreadable, file, "cannot open for reading");
+    in.exceptions(std::ios::failbit | std::ios::badbit);
     TopoDS_Shape shape;
     BRep_Builder builder;
-    if (!BRepTools::Read(shape, file.string().c_str(), builder) || shape.IsNull()) {
+    try {
+        const std::lock_guard lock(readerMutex());
+        const QuietStdout quiet;
+        cad::runGuarded([&] { BRepTools::Read(shape, in, builder); });
+    } catch (const std::ios_base::failure&) {
+        throw Error(ErrorCode::Malformed, file, "BREP data is truncated or corrupt");
+    }
+    if (shape.IsNull()) {
         throw Error(ErrorCode::Malformed, file, "not a readable OpenCASCADE BREP file");
     }
     return shape;
@@ -197,8 +240,7 @@ TopoDS_Shape readBrep(const fs::path& file) {
 
 // One node and mesh per BREP item; items that are the same TShape placed at different
 // locations share one mesh (meshed in the item's own frame, placed by the node transform).
-Scene importBrep(const fs::path& file, const ImportOptions& options) {
-    const TopoDS_Shape shape = readBrep(file);
+Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOptions& options) {
     const std::vector<TopoDS_Shape> items = brepItems(shape);
     if (items.empty()) {
         throw Error(ErrorCode::NoGeometry, file, "the shape has no faces (curves or points only)");
@@ -223,8 +265,7 @@ Scene importBrep(const fs::path& file, const ImportOptions& options) {
         if (it == shared.end()) {
             std::vector<cad::ColouredMesh> groups =
                 cad::extractMeshes(item.Located(TopLoc_Location()), scale, std::nullopt, nullptr);
-            if (groups.empty())
-                continue; // nothing of this item tessellated
+            if (groups.empty()) continue; // nothing of this item tessellated
             groups.front().mesh.name = name;
             triangles += groups.front().mesh.triangleCount();
             if (triangles > options.maxElements) {
@@ -240,6 +281,13 @@ Scene importBrep(const fs::path& file, const ImportOptions& options) {
     if (scene.instances.empty()) {
         throw Error(ErrorCode::NoGeometry, file, "no face could be tessellated");
     }
+    return scene;
+}
+
+Scene importBrep(const fs::path& file, const ImportOptions& options) {
+    const TopoDS_Shape shape = readBrep(file);
+    Scene scene;
+    cad::runGuarded([&] { scene = brepScene(file, shape, options); });
     return scene;
 }
 

@@ -88,7 +88,9 @@ Scene importOne(const fs::path& file, const ImportOptions& options) {
     case SceneFormat::Gltf:
         return importGltf(file, options);
     case SceneFormat::Cad:
-        return importCad(file, options);
+        // OpenCASCADE too: its shape healing can hang on absurd numbers (timeout) and its
+        // readers crash on dangling references.
+        return runIsolated(file, [&] { return importCad(file, options); });
     case SceneFormat::Assimp:
         // assimp runs out of process: some of its readers crash on bad files.
         return runIsolated(file, [&] { return importAssimp(file, options); });

@@ -25,6 +25,13 @@ std::string slurp(const std::string& path) {
 
 CliResult runCli(const std::vector<std::string>& args, unsigned timeoutSeconds,
                  unsigned long long memoryLimitBytes) {
+    std::vector<std::string> argv{HLOD_CLI};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return runProcess(argv, timeoutSeconds, memoryLimitBytes);
+}
+
+CliResult runProcess(const std::vector<std::string>& args, unsigned timeoutSeconds,
+                     unsigned long long memoryLimitBytes) {
     char outTmpl[] = "/tmp/hlod-cli-out-XXXXXX";
     char errTmpl[] = "/tmp/hlod-cli-err-XXXXXX";
     const int outFd = mkstemp(outTmpl);
@@ -32,20 +39,20 @@ CliResult runCli(const std::vector<std::string>& args, unsigned timeoutSeconds,
     CliResult r;
     const pid_t pid = fork();
     if (pid == 0) {
-        rlimit lim{memoryLimitBytes, memoryLimitBytes};
-        setrlimit(RLIMIT_AS, &lim);
+        if (memoryLimitBytes > 0) {
+            rlimit lim{memoryLimitBytes, memoryLimitBytes};
+            setrlimit(RLIMIT_AS, &lim);
+        }
         dup2(outFd, 1);
         dup2(errFd, 2);
         const int devnull = open("/dev/null", O_RDONLY);
         dup2(devnull, 0);
-        std::vector<char*> argv;
-        std::string exe = HLOD_CLI;
-        argv.push_back(exe.data());
         std::vector<std::string> copy = args;
+        std::vector<char*> argv;
         for (std::string& a : copy)
             argv.push_back(a.data());
         argv.push_back(nullptr);
-        execv(exe.c_str(), argv.data());
+        execvp(argv[0], argv.data());
         _exit(127);
     }
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);

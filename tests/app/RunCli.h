@@ -18,4 +18,8 @@ struct CliResult {
 CliResult runCli(const std::vector<std::string>& args, unsigned timeoutSeconds = 60,
                  unsigned long long memoryLimitBytes = 4ull << 30);
 
+// Any program (argv[0] is looked up in PATH), same capture and limits.
+CliResult runProcess(const std::vector<std::string>& argv, unsigned timeoutSeconds = 60,
+                     unsigned long long memoryLimitBytes = 0);
+
 } // namespace hlod::test

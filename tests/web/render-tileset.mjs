@@ -13,7 +13,7 @@
 //   {tilesLoaded, tilesFailed, consoleErrors, pageErrors, nonBackgroundPixelShare, ...}
 // Exit 0 when tilesLoaded > 0, tilesFailed == 0, no console/page errors and
 // nonBackgroundPixelShare > 0.01; otherwise exit 1 with a one-line reason on stderr
-// (2 on bad usage). A loading timeout alone is reported (timedOut) and warned about, not failed.
+// (2 on bad usage). A loading timeout fails too (timedOut).
 //
 // Usage: node render-tileset.mjs DIR OUT.png [--width W] [--height H] [--timeout SECONDS]
 //                                          [--error-target PX]
@@ -278,6 +278,7 @@ function verdict(report) {
   if (report.pageErrors.length) return `page error: ${report.pageErrors[0]}`;
   if (report.consoleErrors.length) return `console error: ${report.consoleErrors[0]}`;
   if (!report.framed) return 'the root tileset never loaded (no bounding sphere to frame)';
+  if (report.timedOut) return 'loading did not settle before the timeout';
   if (report.tilesLoaded === 0) return 'no tile content loaded';
   if (!(report.nonBackgroundPixelShare > MIN_PIXEL_SHARE)) {
     return `only ${(report.nonBackgroundPixelShare * 100).toFixed(2)}% of the pixels differ from the background`;

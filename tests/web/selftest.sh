@@ -10,14 +10,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 cd "$here"
 
-# npm ci when node_modules is missing or was installed from another package-lock.json.
-stamp="node_modules/.hlod-package-lock.sha256"
-want="$(sha256sum package-lock.json | cut -d' ' -f1)"
-if [[ ! -f "$stamp" || "$(cat "$stamp")" != "$want" ]]; then
-  echo "selftest: npm ci"
-  npm ci --no-audit --no-fund --loglevel=error >/dev/null
-  echo "$want" >"$stamp"
-fi
+bash "$here/install.sh"
 
 tmp="$(mktemp -d)"
 if [[ "${1:-}" == "--keep" ]]; then

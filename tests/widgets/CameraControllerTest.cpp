@@ -15,8 +15,12 @@
 namespace hlod::widgets {
 namespace {
 
-glm::dvec3 position(vtkCamera* c) { return {c->GetPosition()[0], c->GetPosition()[1], c->GetPosition()[2]}; }
-glm::dvec3 focal(vtkCamera* c) { return {c->GetFocalPoint()[0], c->GetFocalPoint()[1], c->GetFocalPoint()[2]}; }
+glm::dvec3 position(vtkCamera* c) {
+    return {c->GetPosition()[0], c->GetPosition()[1], c->GetPosition()[2]};
+}
+glm::dvec3 focal(vtkCamera* c) {
+    return {c->GetFocalPoint()[0], c->GetFocalPoint()[1], c->GetFocalPoint()[2]};
+}
 
 TEST(CameraController, OrbitTurnsAroundTheUpAxisKeepingDistance) {
     vtkNew<vtkCamera> camera;
@@ -85,18 +89,19 @@ TEST(CameraController, FitCentresEveryCornerInsideTheFrustum) {
 }
 
 TEST(CameraController, FitOnPointsIgnoresEmptyCornersOfTheSceneBox) {
-    // Two tall posts at opposite ends of a long line: the scene box has tall empty corners,
+    // A 5 m post at the front of a flat 20 x 8 m slab, seen from the front and above: the scene
+    // box has empty corners 5 m above the slab's back edge, which project highest on screen;
     // the points do not, so fitting the points gets closer than fitting the box.
     vtkNew<vtkCamera> boxCamera, pointCamera;
     for (vtkCamera* c : {boxCamera.Get(), pointCamera.Get()}) {
-        c->SetPosition(0, -10, 3);
+        c->SetPosition(0, -10, 10);
         c->SetViewAngle(30.0);
     }
-    const std::vector<glm::dvec3> points{{-10, 0, 0}, {-10, 0, 5}, {10, 0, 0}, {10, 0, 5},
-                                         {0, 0, 0}, {0, 4, 0}};
-    CameraController(boxCamera).fit(std::array<double, 6>{-10, 10, 0, 4, 0, 5}, 3.0);
+    const std::vector<glm::dvec3> points{
+        {-10, 0, 0}, {10, 0, 0}, {0, 0, 5}, {-10, 8, 0}, {10, 8, 0}};
+    CameraController(boxCamera).fit(std::array<double, 6>{-10, 10, 0, 8, 0, 5}, 3.0);
     CameraController(pointCamera).fit(points, 3.0); // wide: the height limits
-    EXPECT_LT(pointCamera->GetDistance(), boxCamera->GetDistance());
+    EXPECT_LT(pointCamera->GetDistance(), 0.9 * boxCamera->GetDistance());
 }
 
 } // namespace

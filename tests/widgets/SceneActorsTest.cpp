@@ -99,7 +99,8 @@ TEST(SceneActors, ManyMaterialsMergeByOpacityWithColoursPerVertex) {
     EXPECT_EQ(translucent.polyData->GetNumberOfCells(), 12);
     EXPECT_EQ(actors->instanceOf(1, 0), 7u);
     // The translucent part keeps alpha per vertex: 0.5 -> byte 128.
-    auto* rgba = vtkUnsignedCharArray::SafeDownCast(translucent.polyData->GetPointData()->GetScalars());
+    auto* rgba =
+        vtkUnsignedCharArray::SafeDownCast(translucent.polyData->GetPointData()->GetScalars());
     ASSERT_NE(rgba, nullptr);
     EXPECT_EQ(rgba->GetNumberOfComponents(), 4);
     EXPECT_EQ(rgba->GetValue(3), 128);

@@ -24,9 +24,8 @@ struct LoaderWithLog {
                          [this](const QStringList&, const QString& m) { log.error(m); });
     }
     bool waitForResult() {
-        return loaded.count() + failed.count() > 0 || QTest::qWaitFor([this] {
-                   return loaded.count() + failed.count() > 0;
-               }, 60000);
+        return loaded.count() + failed.count() > 0 ||
+               QTest::qWaitFor([this] { return loaded.count() + failed.count() > 0; }, 60000);
     }
 };
 

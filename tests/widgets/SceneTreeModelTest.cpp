@@ -45,9 +45,9 @@ TEST(SceneTreeModel, CountsAreSubtreeTotals) {
     EXPECT_EQ(text(root, SceneTreeModel::TrianglesColumn), QStringLiteral("4"));
     EXPECT_EQ(text(group, SceneTreeModel::MeshesColumn), QStringLiteral("1"));
     EXPECT_EQ(text(group, SceneTreeModel::TrianglesColumn), QStringLiteral("1"));
-    EXPECT_EQ(model.counts(0).ownMeshes, 1u);    // the quad
+    EXPECT_EQ(model.counts(0).ownMeshes, 1u); // the quad
     EXPECT_EQ(model.counts(0).ownTriangles, 2u);
-    EXPECT_EQ(model.counts(2).ownMeshes, 0u);    // "group" holds nothing itself
+    EXPECT_EQ(model.counts(2).ownMeshes, 0u); // "group" holds nothing itself
 }
 
 TEST(SceneTreeModel, PassesQtModelConsistencyChecks) {

@@ -14,11 +14,15 @@ const QString kStudio = QStringLiteral(HLOD_BINARY_DIR "/app/hlod-studio");
 
 struct StudioRun {
     int exitCode = -1;
+    QString stdoutText;
     QString stderrText;
 };
 
-StudioRun runStudio(const QStringList& args) {
+StudioRun runStudio(const QStringList& args, const QStringList& extraEnvironment = {}) {
     QProcess process;
+    QStringList environment = QProcess::systemEnvironment();
+    environment << extraEnvironment;
+    process.setEnvironment(environment);
     process.start(kStudio, args);
     StudioRun run;
     if (!process.waitForFinished(120000)) {
@@ -27,6 +31,7 @@ StudioRun runStudio(const QStringList& args) {
         return run;
     }
     run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
+    run.stdoutText = QString::fromUtf8(process.readAllStandardOutput());
     run.stderrText = QString::fromLocal8Bit(process.readAllStandardError());
     return run;
 }
@@ -42,8 +47,8 @@ protected:
 
 TEST_F(StudioApp, ScreenshotOfTheSampleSceneHasTheRequestedSize) {
     const QString out = dir.filePath(QStringLiteral("sample.png"));
-    const StudioRun run = runStudio({QStringLiteral("--screenshot"), out, QStringLiteral("--size"),
-                               QStringLiteral("900x640")});
+    const StudioRun run = runStudio(
+        {QStringLiteral("--screenshot"), out, QStringLiteral("--size"), QStringLiteral("900x640")});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText.toStdString();
     const QImage image(out);
     EXPECT_EQ(image.size(), QSize(900, 640));
@@ -51,12 +56,13 @@ TEST_F(StudioApp, ScreenshotOfTheSampleSceneHasTheRequestedSize) {
 
 TEST_F(StudioApp, ViewportOnlyScreenshotIsSmallerThanTheWindow) {
     const QString out = dir.filePath(QStringLiteral("view.png"));
-    const StudioRun run = runStudio({QStringLiteral("--screenshot"), out, QStringLiteral("--viewport-only"),
-                               QStringLiteral("--size"), QStringLiteral("900x640")});
+    const StudioRun run =
+        runStudio({QStringLiteral("--screenshot"), out, QStringLiteral("--viewport-only"),
+                   QStringLiteral("--size"), QStringLiteral("900x640")});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText.toStdString();
     const QImage image(out);
     ASSERT_FALSE(image.isNull());
-    EXPECT_LT(image.width(), 900); // the scene dock takes part of the width
+    EXPECT_LT(image.width(), 900);  // the scene dock takes part of the width
     EXPECT_LT(image.height(), 640); // menu, log dock and status bar take part of the height
 }
 
@@ -69,7 +75,8 @@ TEST_F(StudioApp, BrokenFileExitsWithCodeOneAndNamesTheFile) {
     const QString out = dir.filePath(QStringLiteral("never.png"));
     const StudioRun run = runStudio({broken, QStringLiteral("--screenshot"), out});
     EXPECT_EQ(run.exitCode, 1);
-    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("broken.gltf"))) << run.stderrText.toStdString();
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("broken.gltf")))
+        << run.stderrText.toStdString();
     EXPECT_FALSE(QFileInfo::exists(out));
 }
 
@@ -77,6 +84,35 @@ TEST_F(StudioApp, BadSizeArgumentExitsWithCodeTwo) {
     const StudioRun run = runStudio({QStringLiteral("--size"), QStringLiteral("huge")});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_TRUE(run.stderrText.contains(QStringLiteral("--size")));
+}
+
+TEST_F(StudioApp, BadOrbitArgumentExitsWithCodeTwo) {
+    const StudioRun run = runStudio({QStringLiteral("--orbit"), QStringLiteral("30")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("--orbit")));
+}
+
+TEST_F(StudioApp, WithoutOpenGlTheWindowExplainsInsteadOfCrashing) {
+    // QT_XCB_GL_INTEGRATION=none takes GLX away from Qt: no context can be created at all.
+    const QString out = dir.filePath(QStringLiteral("nogl.png"));
+    const StudioRun run = runStudio({QStringLiteral("--screenshot"), out},
+                                    {QStringLiteral("QT_XCB_GL_INTEGRATION=none")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("OpenGL 3.2 is not available")))
+        << run.stderrText.toStdString();
+    EXPECT_FALSE(QImage(out).isNull()); // the window, with the explanation in the centre
+}
+
+TEST_F(StudioApp, SwedishLocaleLoadsTheSwedishTranslation) {
+    // The help text comes from tr(): in a Swedish locale it must come out of
+    // :/translations/hlod-studio_sv.qm, proving the resource path and the locale check.
+    const StudioRun run =
+        runStudio({QStringLiteral("--help")},
+                  {QStringLiteral("LANG=sv_SE.UTF-8"), QStringLiteral("LC_ALL=sv_SE.UTF-8"),
+                   QStringLiteral("LANGUAGE=sv")});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_TRUE(run.stdoutText.contains(QStringLiteral("Spara en skärmbild")))
+        << run.stdoutText.toStdString();
 }
 
 } // namespace

@@ -51,9 +51,8 @@ Scene makeTinyScene() {
     const Id quad = scene.addMesh(quadMesh());
     const Id left = scene.addNode("left", 0, glm::translate(glm::dmat4(1.0), {10, 0, 0}));
     const Id group = scene.addNode("group", 0);
-    const Id right = scene.addNode("right", group,
-                                   glm::scale(glm::translate(glm::dmat4(1.0), {0, 5, 0}),
-                                              glm::dvec3(2.0)));
+    const Id right = scene.addNode(
+        "right", group, glm::scale(glm::translate(glm::dmat4(1.0), {0, 5, 0}), glm::dvec3(2.0)));
     scene.addInstance(tri, left);
     scene.addInstance(tri, right);
     scene.addInstance(quad, 0);
@@ -74,8 +73,8 @@ Scene makeCubeGrid(int count) {
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
     for (int i = 0; i < count; ++i) {
         const glm::dvec3 at(2.0 * (i % side), 0.6 * (i % 3), 2.0 * (i / side));
-        const Id node = scene.addNode("cube " + std::to_string(i), 0,
-                                      glm::translate(glm::dmat4(1.0), at));
+        const Id node =
+            scene.addNode("cube " + std::to_string(i), 0, glm::translate(glm::dmat4(1.0), at));
         scene.addInstance(i % 5 == 0 ? redMesh : grey, node);
     }
     scene.updateWorldTransforms();
@@ -83,8 +82,7 @@ Scene makeCubeGrid(int count) {
 }
 
 double foregroundShare(const QImage& image, const QImage& background, int threshold) {
-    if (image.size() != background.size() || image.isNull())
-        return 0.0;
+    if (image.size() != background.size() || image.isNull()) return 0.0;
     const QImage a = image.convertToFormat(QImage::Format_RGB32);
     const QImage b = background.convertToFormat(QImage::Format_RGB32);
     qint64 count = 0;
@@ -98,8 +96,7 @@ double foregroundShare(const QImage& image, const QImage& background, int thresh
 }
 
 QRect foregroundBox(const QImage& image, const QImage& background, int threshold) {
-    if (image.size() != background.size() || image.isNull())
-        return {};
+    if (image.size() != background.size() || image.isNull()) return {};
     const QImage a = image.convertToFormat(QImage::Format_RGB32);
     const QImage b = background.convertToFormat(QImage::Format_RGB32);
     QRect box;
@@ -107,15 +104,13 @@ QRect foregroundBox(const QImage& image, const QImage& background, int threshold
         const auto* ra = reinterpret_cast<const QRgb*>(a.constScanLine(y));
         const auto* rb = reinterpret_cast<const QRgb*>(b.constScanLine(y));
         for (int x = 0; x < a.width(); ++x)
-            if (channelDiff(ra[x], rb[x]) > threshold)
-                box |= QRect(x, y, 1, 1);
+            if (channelDiff(ra[x], rb[x]) > threshold) box |= QRect(x, y, 1, 1);
     }
     return box;
 }
 
 double meanAbsDifference(const QImage& a, const QImage& b) {
-    if (a.size() != b.size() || a.isNull())
-        return 255.0;
+    if (a.size() != b.size() || a.isNull()) return 255.0;
     const QImage ia = a.convertToFormat(QImage::Format_RGB32);
     const QImage ib = b.convertToFormat(QImage::Format_RGB32);
     double sum = 0.0;
@@ -138,8 +133,7 @@ double compareWithBaseline(const QImage& image, const QString& name) {
         return 0.0;
     }
     const QImage baseline(path);
-    if (baseline.isNull() || baseline.size() != image.size())
-        return -1.0;
+    if (baseline.isNull() || baseline.size() != image.size()) return -1.0;
     return meanAbsDifference(image, baseline);
 }
 

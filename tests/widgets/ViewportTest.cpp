@@ -2,9 +2,15 @@
 // images (tests/widgets/baselines, rewritten with HLOD_UPDATE_BASELINES=1).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
+#include <QApplication>
+#include <QMouseEvent>
 #include <QTest>
+#include <QWheelEvent>
+#include <glm/glm.hpp>
+#include <vtkCamera.h>
 
 #include "TestScenes.h"
 #include "pipeline/io/Import.h"
@@ -131,6 +137,62 @@ TEST_F(ViewportTest, ClearingTheSceneLeavesOnlyBackground) {
     EXPECT_GT(test::foregroundShare(viewport->grabFrame(), background), 0.05);
     viewport->clearScene();
     EXPECT_EQ(test::foregroundShare(viewport->grabFrame(), background), 0.0);
+}
+
+// Sends a drag from `from` to `to` with `button` held (QTest::mouseMove carries no buttons).
+void drag(QWidget* w, Qt::MouseButton button, QPoint from, QPoint to,
+          Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QMouseEvent press(QEvent::MouseButtonPress, from, w->mapToGlobal(from), button, button,
+                      modifiers);
+    QApplication::sendEvent(w, &press);
+    for (int step = 1; step <= 4; ++step) {
+        const QPoint at = from + (to - from) * step / 4;
+        QMouseEvent move(QEvent::MouseMove, at, w->mapToGlobal(at), Qt::NoButton, button,
+                         modifiers);
+        QApplication::sendEvent(w, &move);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, to, w->mapToGlobal(to), button, Qt::NoButton,
+                        modifiers);
+    QApplication::sendEvent(w, &release);
+}
+
+TEST_F(ViewportTest, MouseAndKeysDriveTheCamera) {
+    show(test::makeCubeGrid(30));
+    vtkCamera* camera = viewport->camera();
+    const double fitted = camera->GetDistance();
+    const glm::dvec3 eye0(camera->GetPosition()[0], camera->GetPosition()[1],
+                          camera->GetPosition()[2]);
+
+    // Left drag orbits: the eye moves, the distance to the focal point does not.
+    drag(viewport.get(), Qt::LeftButton, {100, 100}, {200, 100});
+    const glm::dvec3 eye1(camera->GetPosition()[0], camera->GetPosition()[1],
+                          camera->GetPosition()[2]);
+    EXPECT_GT(glm::length(eye1 - eye0), 0.1 * fitted);
+    EXPECT_NEAR(camera->GetDistance(), fitted, 1e-6 * fitted);
+
+    // Wheel forward zooms in by 1.15 per notch.
+    QWheelEvent wheel(QPointF(240, 180), viewport->mapToGlobal(QPointF(240, 180)), QPoint(),
+                      QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport.get(), &wheel);
+    EXPECT_NEAR(camera->GetDistance(), fitted / 1.15, 1e-6 * fitted);
+
+    // Shift + left drag pans: the focal point moves sideways, the distance stays.
+    const double fx = camera->GetFocalPoint()[0], fz = camera->GetFocalPoint()[2];
+    drag(viewport.get(), Qt::LeftButton, {200, 200}, {260, 200}, Qt::ShiftModifier);
+    EXPECT_GT(std::hypot(camera->GetFocalPoint()[0] - fx, camera->GetFocalPoint()[2] - fz), 0.01);
+    EXPECT_NEAR(camera->GetDistance(), fitted / 1.15, 1e-6 * fitted);
+
+    // Right drag upwards zooms in.
+    const double before = camera->GetDistance();
+    drag(viewport.get(), Qt::RightButton, {200, 250}, {200, 150});
+    EXPECT_LT(camera->GetDistance(), before * 0.5);
+
+    // F fits again: back to a framed view (from the new direction, so about the same distance).
+    QTest::keyClick(viewport.get(), Qt::Key_F);
+    EXPECT_NEAR(camera->GetDistance(), fitted, 0.25 * fitted);
+    const QRect box = test::foregroundBox(viewport->grabFrame(), background);
+    EXPECT_GT(box.left(), 2);
+    EXPECT_LT(box.right(), 477);
 }
 
 TEST(GlSupport, ProbeFindsAnOpenGl32CoreContext) {

@@ -12,6 +12,7 @@
 #include "pipeline/cluster/Cluster.h"
 #include "pipeline/cluster/ClusterDriver.h"
 #include "pipeline/cluster/ClusterValidate.h"
+#include "pipeline/cluster/LevelMerger.h"
 
 namespace hlod {
 namespace {
@@ -29,7 +30,9 @@ const Model kModels[] = {{VolumeType::Sphere, 0.0},
 ClusterTree naiveTree(const Scene& scene, const ClusterParams& p) {
     return buildConstrainedTree(scene, p,
                                 CostModel(p.volume, p.volume == VolumeType::Aabb ? p.k : 0.0),
-                                test::naiveMergeLevels);
+                                [](TreeBuilder& b, std::vector<Id> u, int c, const Progress& g) {
+                                    return test::naiveMergeLevels(b, std::move(u), c, g);
+                                });
 }
 
 // Structural promises of the rule on top of the ClusterTree invariants.
@@ -77,6 +80,30 @@ TEST(ClusterProperty, FastEqualsNaiveForFractionalK) {
     p.k = 0.5;
     p.maxChildren = 5;
     EXPECT_EQ(test::treeDifference(buildClusterTree(scene, p), naiveTree(scene, p)), "");
+}
+
+TEST(ClusterProperty, FastEqualsNaiveWithASampledBudget) {
+    // Budget samples smaller than the unit count (production uses 1024, far above the sizes
+    // the naive reference can handle): the sampled median must match too.
+    const Scene scene = test::makeRandomScene({250, test::Layout::Clumped, 12, 0.05});
+    for (const Model& model : kModels) {
+        for (std::size_t sample : {1u, 7u, 64u}) {
+            ClusterParams p;
+            p.volume = model.volume;
+            p.k = model.k;
+            const CostModel cost(p.volume, p.k);
+            const LevelMergeOptions options{sample};
+            const ClusterTree fast = buildConstrainedTree(
+                scene, p, cost, [&](TreeBuilder& b, std::vector<Id> u, int c, const Progress& g) {
+                    return mergeLevelsWith(b, std::move(u), c, g, options);
+                });
+            const ClusterTree reference = buildConstrainedTree(
+                scene, p, cost, [&](TreeBuilder& b, std::vector<Id> u, int c, const Progress& g) {
+                    return test::naiveMergeLevels(b, std::move(u), c, g, sample);
+                });
+            EXPECT_EQ(test::treeDifference(fast, reference), "") << "sample " << sample;
+        }
+    }
 }
 
 TEST(ClusterProperty, FastEqualsNaiveWithConstraints) {

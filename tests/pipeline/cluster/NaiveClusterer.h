@@ -2,8 +2,8 @@
 // property test (the fast mergeLevels must build the same tree) and the benchmark ratio.
 //
 // Written straight from the rule, with no spatial structure and no lazy queue: at the start of
-// each level every pair of units is costed to find each unit's cheapest partner and the
-// budget; then every step scans all pairs of live groups for the smallest (cost, lower key,
+// each level the sampled units are costed against every other unit to find their cheapest
+// partners and the budget; then every step scans all pairs of live groups for the smallest (cost, lower key,
 // higher key) within the budget and the children cap. Pair costs are kept in a matrix and a
 // merged group's row is recomputed (the other entries cannot change: a pair's cost depends on
 // its two groups only). O(n^2) memory and O(n^3) time: only for a few thousand units.
@@ -91,25 +91,30 @@ inline std::vector<Id> runLevel(TreeBuilder& builder, const std::vector<Id>& uni
 
 } // namespace naive
 
-// Same contract as hlod::mergeLevels (a UnitMerger).
+// Same contract as hlod::mergeLevels (a UnitMerger); `budgetSample` is S of the rule.
 inline Id naiveMergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
-                           const Progress& progress = {}) {
+                           const Progress& progress = {}, std::size_t budgetSample = 1024) {
     if (units.empty()) return kNoId;
     const CostModel& model = builder.model();
     double budget = 0.0;
     while (units.size() > 1) {
         progress.throwIfCancelled();
-        const std::size_t n = units.size();
-        std::vector<double> best(n, std::numeric_limits<double>::infinity());
-        for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t j = 0; j < n; ++j) {
-                if (i == j) continue;
-                const Id a = std::min(units[i], units[j]), b = std::max(units[i], units[j]);
-                best[i] = std::min(best[i], model.mergeCost(builder.unit(a), builder.unit(b)));
+        std::sort(units.begin(), units.end());
+        const std::size_t m = units.size();
+        const std::size_t s = std::min(m, budgetSample);
+        std::vector<double> best;
+        for (std::size_t i = 0; i < s; ++i) {
+            const Id u = units[i * m / s];
+            double b = std::numeric_limits<double>::infinity();
+            for (Id v : units) {
+                if (v == u) continue;
+                b = std::min(b, model.mergeCost(builder.unit(std::min(u, v)),
+                                                builder.unit(std::max(u, v))));
             }
+            best.push_back(b);
         }
         std::sort(best.begin(), best.end());
-        budget = std::max(budget, best[(n - 1) / 2]);
+        budget = std::max(budget, best[(s - 1) / 2]);
         units = naive::runLevel(builder, units, budget, static_cast<std::size_t>(maxChildren));
     }
     return units[0];

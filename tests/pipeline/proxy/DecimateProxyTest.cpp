@@ -112,10 +112,11 @@ TEST(SloppyProxy, SphereStaysWithinErrorBudgetBothWays) {
 
 TEST(SloppyProxy, ClustersDenseMeshesHardAndLeavesCoarseOnesAlone) {
     // Vertex clustering only removes triangles whose corners share a grid cell: a 128 x 64
-    // sphere (vertex spacing ~5 cm) loses most of them at a 5 cm budget (cells of 2.9 cm)...
-    const ProxyMesh dense = sloppyProxy(unitSphereSoup(), 0.05);
+    // sphere (vertex spacing up to 4.9 cm) loses most of them at a 10 cm budget (cells of
+    // 5.8 cm)...
+    const ProxyMesh dense = sloppyProxy(unitSphereSoup(), 0.1);
     EXPECT_LT(dense.triangleCount(), 16128u / 2);
-    EXPECT_LE(hausdorffToUnitSphere(dense, glm::dvec3(0.0)), 0.05);
+    EXPECT_LE(hausdorffToUnitSphere(dense, glm::dvec3(0.0)), 0.1);
     // ...while 1 cm cubes at a 5 mm budget keep all 12 triangles (no two corners in a cell),
     // where decimation could merge nothing either.
     Scene s;
