@@ -107,7 +107,7 @@ void mergeOnly(benchmark::State& state) {
         state.PauseTiming();
         auto [builder, units] = leaves(s, volume);
         state.ResumeTiming();
-        const hlod::Id root = Naive ? hlod::test::naiveMergeLevels(builder, units, 8)
+        const hlod::Id root = Naive ? hlod::test::naiveMergeLevels(builder, units, 8, {})
                                     : hlod::mergeLevels(builder, units, 8);
         benchmark::DoNotOptimize(root);
     }

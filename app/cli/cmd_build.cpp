@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pipeline/export/Package.h"
+
 #include "Args.h"
 #include "Commands.h"
 #include "ProgressBar.h"
@@ -46,6 +48,7 @@ struct BuildOptions {
     bool dlod = true;
     bool json = false;
     ImportOptions import;
+    std::optional<GeoLocation> geo; // --geo lat,lon,height: root transform on the globe
 };
 
 BuildOptions parseOptions(const Args& args) {
@@ -68,8 +71,8 @@ BuildOptions parseOptions(const Args& args) {
         o.bake.cacheDir = args.value("--cache", defaultCacheDir().string());
     o.dlod = !args.has("--no-dlod");
     o.json = args.has("--json");
-    o.import.cadRelativeDeflection =
-        args.number("--deflection", o.import.cadRelativeDeflection, 1e-6, 0.5);
+    o.import = importOptionsFromArgs(args);
+    if (auto geo = args.value("--geo")) o.geo = parseGeoLocation(*geo);
     return o;
 }
 
@@ -92,7 +95,7 @@ int runBuild(const CommandArgs& argv) {
     const Args args(argv,
                     {"-o", "--output", "--volume", "--k", "--max-children", "--proxy",
                      "--screen-size", "--pixel-error", "--fov", "--viewport-height", "--threads",
-                     "--cache", "--deflection"},
+                     "--cache", "--deflection", "--brep-unit", "--geo"},
                     {"--json", "--no-cache", "--no-dlod"});
     const BuildOptions o = parseOptions(args);
     validate(o.bake.screen);
@@ -122,7 +125,17 @@ int runBuild(const CommandArgs& argv) {
     info.statistics.push_back(hlodStats(scene, tree, bake, hlodVersionName(tree)));
     info.share = proxyShare(scene, tree, bake);
     t = std::chrono::steady_clock::now();
-    const std::uintmax_t bytes = writeBuildFolder(o.output, scene, tree, bake, info);
+    PackageOptions package;
+    package.inputs = loaded.inputs;
+    package.geo = o.geo;
+    nlohmann::json summary = buildTreeJson(scene, tree, bake, info);
+    summary.erase("nodes"); // the package manifest has its own node list
+    package.parameters = summary.value("parameters", nlohmann::json::object());
+    package.statistics = summary;
+    const PackageSummary written =
+        writePackage(o.output, scene, tree, bake, o.bake, package, bar.progress());
+    bar.finish();
+    const std::uintmax_t bytes = written.bytes;
     const double writeSeconds = seconds(t);
 
     if (o.json) {

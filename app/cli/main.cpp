@@ -23,7 +23,7 @@ const CommandEntry kCommands[] = {
      "hlod build SCENE -o DIR [--volume sphere|aabb|octree|original] [--k K] "
      "[--max-children N] [--proxy decimate|remesh|sloppy] [--screen-size PX] [--pixel-error PX] "
      "[--fov DEG] [--viewport-height PX] [--threads N] [--cache DIR] [--no-cache] [--no-dlod] "
-     "[--json]"},
+     "[--geo LAT,LON,H] [--deflection R] [--brep-unit M] [--json]"},
 };
 
 void printUsage(std::FILE* out) {

@@ -181,4 +181,76 @@ private:
     bool hasShape_;
 };
 
+// Lower bound of mergeCost(x, g) over every x described by region `a` and g described by `b`
+// (the spatial self-join of a level). Same argument as BoundQuery with x's exact bounds
+// replaced by its region:
+// - Sphere: balls inside boxes a distance d > 0 apart are at least d apart, so the enclosing
+//   diameter is at least d + 2 minRadius_a + 2 minRadius_b; else at least twice the larger
+//   minimum radius.
+// - Box: per axis, intervals of lengths >= w_a in [a_lo, a_hi] and >= w_b in [b_lo, b_hi] have
+//   a hull of at least max(w_a, w_b, b_lo - a_hi + w_a + w_b, a_lo - b_hi + w_a + w_b).
+// pairLowerBound(model, a, b) > threshold, without divisions (the self-join's inner loop).
+[[gnu::always_inline]] inline bool pairBoundExceeds(const CostModel& model, const Region& a, const Region& b,
+                             double threshold) {
+    constexpr double kSafety = 1.0 - 1e-9;
+    constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
+    const double fvSum = a.maxFv + b.maxFv;
+    const glm::dvec3 gap =
+        glm::max(glm::max(a.box.min - b.box.max, b.box.min - a.box.max), glm::dvec3(0.0));
+    if (model.volume() == VolumeType::Sphere) {
+        const double d2 = glm::dot(gap, gap);
+        const double diameter = d2 > 0.0 ? std::sqrt(d2) + 2.0 * (a.minRadius + b.minRadius)
+                                         : 2.0 * std::max(a.minRadius, b.minRadius);
+        const double r = diameter * 0.5;
+        const double r3 = r * r * r;
+        // r3 * max(1, c r3 / fvSum) > t  <=>  r3 * max(fvSum, c r3) > t * fvSum
+        return r3 * std::max(fvSum, kSphereVolume * r3) * kSafety > threshold * fvSum;
+    }
+    const glm::dvec3 sum = a.minExtent + b.minExtent;
+    const glm::dvec3 ext = glm::max(
+        glm::max(a.minExtent, b.minExtent),
+        glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
+    const double v = std::max(ext.x * ext.y * ext.z, std::max(a.minVolume, b.minVolume));
+    double lhs = v * std::max(fvSum, v) * kSafety;
+    double rhs = threshold * fvSum;
+    if (model.k() != 0.0) {
+        // shape = max(1, maxExt / minUb): multiply through by minUb^k instead of dividing.
+        const glm::dvec3 ub = glm::max(a.box.max, b.box.max) - glm::min(a.box.min, b.box.min);
+        const double minUb = std::min(ub.x, std::min(ub.y, ub.z));
+        const double maxExt = std::max(minUb, std::max(ext.x, std::max(ext.y, ext.z)));
+        lhs *= model.powK(maxExt);
+        rhs *= model.powK(minUb);
+    }
+    return lhs > rhs;
+}
+
+inline double pairLowerBound(const CostModel& model, const Region& a, const Region& b) {
+    constexpr double kSafety = 1.0 - 1e-9;
+    constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
+    const double fvSum = a.maxFv + b.maxFv;
+    const glm::dvec3 gap =
+        glm::max(glm::max(a.box.min - b.box.max, b.box.min - a.box.max), glm::dvec3(0.0));
+    if (model.volume() == VolumeType::Sphere) {
+        const double d2 = glm::dot(gap, gap);
+        const double diameter = d2 > 0.0 ? std::sqrt(d2) + 2.0 * (a.minRadius + b.minRadius)
+                                         : 2.0 * std::max(a.minRadius, b.minRadius);
+        const double r = diameter * 0.5;
+        const double r3 = r * r * r;
+        return r3 * std::max(1.0, kSphereVolume * r3 / fvSum) * kSafety;
+    }
+    const glm::dvec3 sum = a.minExtent + b.minExtent;
+    const glm::dvec3 ext = glm::max(
+        glm::max(a.minExtent, b.minExtent),
+        glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
+    const double v = std::max(ext.x * ext.y * ext.z, std::max(a.minVolume, b.minVolume));
+    double bound = v * std::max(1.0, v / fvSum) * kSafety;
+    if (model.k() != 0.0) {
+        const glm::dvec3 ub = glm::max(a.box.max, b.box.max) - glm::min(a.box.min, b.box.min);
+        const double shape =
+            std::max(ext.x, std::max(ext.y, ext.z)) / std::min(ub.x, std::min(ub.y, ub.z));
+        bound *= model.powK(std::max(1.0, shape));
+    }
+    return bound;
+}
+
 } // namespace hlod

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
 #include <queue>
+#include <cstdio>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -24,24 +24,29 @@ struct Candidate {
     double cost = kInf;
     Id lo = kNoId;
     Id hi = kNoId;
-    std::uint32_t group = kNone;   // whose cheapest partner this is
-    std::uint32_t partner = kNone; // that partner
+    std::uint32_t group = kNone;   // whose candidate this is
+    std::uint32_t partner = kNone; // the other group (or unit, in the neighbour lists)
 };
 
-bool keyLess(double cost, Id lo, Id hi, const Candidate& c) {
-    return cost < c.cost || (cost == c.cost && (lo < c.lo || (lo == c.lo && hi < c.hi)));
+bool keyLess(const Candidate& a, const Candidate& b) {
+    return a.cost < b.cost || (a.cost == b.cost && (a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi)));
 }
 
 struct LaterFirst {
-    bool operator()(const Candidate& a, const Candidate& b) const {
-        return keyLess(b.cost, b.lo, b.hi, a);
-    }
+    bool operator()(const Candidate& a, const Candidate& b) const { return keyLess(b, a); }
+};
+
+// Undirected neighbour graph over a level's units (positions in the id-sorted unit list), in
+// CSR form; each edge appears in both endpoints' ranges (duplicates allowed).
+struct Graph {
+    std::vector<std::uint32_t> start{0};
+    std::vector<std::uint32_t> adj;
 };
 
 struct Group {
     ClusterUnit unit;
     Id key = kNoId;
-    std::uint32_t head = kNone; // member items as a linked list through Level::next
+    std::uint32_t head = kNone; // member units as a linked list through Level::next_
     std::uint32_t tail = kNone;
     std::uint32_t size = 0;
     bool alive = true;
@@ -49,9 +54,10 @@ struct Group {
 
 class Level {
 public:
-    Level(TreeBuilder& builder, const std::vector<Id>& units, int maxChildren)
+    Level(TreeBuilder& builder, const std::vector<Id>& units, int maxChildren,
+          std::size_t neighbours)
         : builder_(builder), model_(builder.model()), units_(units),
-          cap_(static_cast<std::uint32_t>(maxChildren)) {
+          cap_(static_cast<std::uint32_t>(maxChildren)), k_(neighbours) {
         const std::size_t n = units.size();
         groupOf_.resize(n);
         next_.assign(n, kNone);
@@ -72,110 +78,202 @@ public:
         seen_.assign(n, 0);
     }
 
-    // Cheapest partner of every unit in `which` (indices into the level's units) with cost
-    // <= budget, in parallel; the result is aligned with `which`.
-    std::vector<Candidate> cheapestPartners(const std::vector<std::uint32_t>& which,
-                                            double budget) const {
-        std::vector<Candidate> out(which.size());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64),
+    // Cheapest partner cost of each unit in `which` (indices of units), in parallel.
+    std::vector<double> cheapestCosts(const std::vector<std::uint32_t>& which) const {
+        std::vector<double> out(which.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 16),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                                  out[i] = cheapestPartner(which[i], budget, nullptr);
+                                  out[i] = cheapestUnitCost(which[i]);
                               }
                           });
         return out;
     }
 
-    // Runs the level with budget `budget`, starting from the candidates; returns the merges.
-    std::size_t run(const std::vector<Candidate>& initial, double budget,
-                    const Progress& progress) {
+    // Rule step 3: every unit's K cheapest pairs within the budget, from one spatial
+    // self-join, made symmetric into the level's neighbour graph.
+    void buildGraph(double budget) {
+        const std::size_t n = units_.size();
+        lists_.assign(n * k_, Candidate{});
+        listSize_.assign(n, 0);
+        auto exceeds = [&](const Region& a, const Region& b) {
+            return pairBoundExceeds(model_, a, b, budget);
+        };
+        // The join has already tested the bound of the two items themselves.
+        auto visit = [&](std::uint32_t i, std::uint32_t j) {
+            const bool iLow = units_[i] < units_[j];
+            const Group& lo = groups_[iLow ? i : j];
+            const Group& hi = groups_[iLow ? j : i];
+            const double cost = model_.mergeCost(lo.unit, hi.unit);
+            if (cost > budget) return;
+            offer(i, Candidate{cost, lo.key, hi.key, i, j});
+            offer(j, Candidate{cost, lo.key, hi.key, j, i});
+        };
+        bvh_.join(exceeds, visit);
+        // Symmetric adjacency in CSR form: u ~ v when either lists the other.
+        Graph& g = graph_;
+        g.start.assign(n + 1, 0);
+        for (std::uint32_t u = 0; u < n; ++u) {
+            for (std::size_t k = 0; k < listSize_[u]; ++k) {
+                ++g.start[u + 1];
+                ++g.start[lists_[u * k_ + k].partner + 1];
+            }
+        }
+        for (std::size_t u = 0; u < n; ++u) g.start[u + 1] += g.start[u];
+        g.adj.resize(g.start[n]);
+        std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
+        for (std::uint32_t u = 0; u < n; ++u) {
+            for (std::size_t k = 0; k < listSize_[u]; ++k) {
+                const std::uint32_t v = lists_[u * k_ + k].partner;
+                g.adj[fill[u]++] = v;
+                g.adj[fill[v]++] = u;
+            }
+        }
+        lists_.clear();
+        lists_.shrink_to_fit();
+    }
+
+    // Rule step 3, inherited: the previous level's graph contracted by its groups.
+    void setGraph(Graph graph) { graph_ = std::move(graph); }
+
+    // Rule step 4: cheapest adjacent pair first until none is within budget and cap.
+    std::size_t run(double budget, const Progress& progress) {
         std::priority_queue<Candidate, std::vector<Candidate>, LaterFirst> heap;
-        for (const Candidate& c : initial) {
-            if (c.partner != kNone && c.cost <= budget) heap.push(c);
+        for (std::uint32_t g = 0; g < units_.size(); ++g) {
+            const Candidate c = cheapestNeighbour(g, budget);
+            if (c.partner != kNone) heap.push(c);
         }
         std::size_t merges = 0;
         while (!heap.empty()) {
             const Candidate top = heap.top();
             heap.pop();
             if (!groups_[top.group].alive) continue;
-            if (!groups_[top.partner].alive) {
-                // The partner merged since: recompute (a lower bound no longer exact).
-                const Candidate c = cheapestPartner(top.group, budget, &seen_);
-                if (c.partner != kNone) heap.push(c);
-                continue;
+            // A live entry whose partner also lives is exact and, being the smallest lower
+            // bound, the global minimum. One whose partner merged is replaced.
+            std::uint32_t g = top.group;
+            if (groups_[top.partner].alive) {
+                g = merge(top.group, top.partner);
+                if (++merges % 4096 == 0) progress.throwIfCancelled();
             }
-            const std::uint32_t z = merge(top.group, top.partner);
-            const Candidate c = cheapestPartner(z, budget, &seen_);
+            const Candidate c = cheapestNeighbour(g, budget);
             if (c.partner != kNone) heap.push(c);
-            if (++merges % 4096 == 0) progress.throwIfCancelled();
         }
         return merges;
     }
 
-    // Next level's units: new nodes (ascending key) and carried singletons.
-    std::vector<Id> finish() {
+    // Rule step 5: the next level's units in ascending id (carried singletons and new nodes,
+    // which take ids in ascending key order) and the graph contracted by this level's groups:
+    // two next units are neighbours when a member of one neighboured a member of the other.
+    std::vector<Id> finish(Graph& contracted, std::vector<std::uint32_t>& scratch) {
         std::vector<std::uint32_t> formed;
-        std::vector<Id> next;
         for (std::uint32_t g = 0; g < groups_.size(); ++g) {
-            if (!groups_[g].alive) continue;
-            if (groups_[g].size == 1) {
-                next.push_back(units_[groups_[g].head]);
-            } else {
-                formed.push_back(g);
-            }
+            if (groups_[g].alive && groups_[g].size > 1) formed.push_back(g);
         }
         std::sort(formed.begin(), formed.end(), [&](std::uint32_t a, std::uint32_t b) {
             return groups_[a].key < groups_[b].key;
         });
+        std::vector<Id> nodeOf(groups_.size(), kNoId); // live group -> its next-level node
         for (std::uint32_t g : formed) {
             std::vector<Id> children;
             children.reserve(groups_[g].size);
             for (std::uint32_t i = groups_[g].head; i != kNone; i = next_[i]) {
                 children.push_back(units_[i]);
             }
-            next.push_back(builder_.addNode(std::move(children), groups_[g].unit));
+            nodeOf[g] = builder_.addNode(std::move(children), groups_[g].unit);
         }
-        return next;
+        std::vector<std::pair<Id, std::uint32_t>> next; // (node id, group)
+        for (std::uint32_t g = 0; g < groups_.size(); ++g) {
+            if (!groups_[g].alive) continue;
+            if (groups_[g].size == 1) nodeOf[g] = units_[groups_[g].head];
+            next.emplace_back(nodeOf[g], g);
+        }
+        std::sort(next.begin(), next.end());
+        // Position of each live group in the next level.
+        scratch.assign(groups_.size(), kNone);
+        for (std::uint32_t p = 0; p < next.size(); ++p) scratch[next[p].second] = p;
+        contracted.start.assign(1, 0);
+        contracted.adj.clear();
+        std::vector<std::uint32_t> mark(next.size(), kNone);
+        for (std::uint32_t p = 0; p < next.size(); ++p) {
+            const Group& G = groups_[next[p].second];
+            for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
+                for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
+                    const std::uint32_t q = scratch[groupOf_[graph_.adj[e]]];
+                    if (q == p || mark[q] == p) continue;
+                    mark[q] = p;
+                    contracted.adj.push_back(q);
+                }
+            }
+            contracted.start.push_back(static_cast<std::uint32_t>(contracted.adj.size()));
+        }
+        std::vector<Id> units(next.size());
+        for (std::size_t p = 0; p < next.size(); ++p) units[p] = next[p].first;
+        return units;
     }
 
 private:
-    // Cheapest valid partner of group g with cost <= budget (kNone partner when none).
-    // `seen` dedups groups met through several member items; null when every group is a
-    // single item (level start), which also makes the call safe to run concurrently.
-    Candidate cheapestPartner(std::uint32_t g, double budget,
-                              std::vector<std::uint32_t>* seen) const {
+    // Keeps c in unit i's list if it is among its K cheapest.
+    void offer(std::uint32_t i, const Candidate& c) {
+        Candidate* list = &lists_[i * k_];
+        std::uint8_t& size = listSize_[i];
+        if (size == k_) {
+            if (!keyLess(c, list[k_ - 1])) return;
+            --size;
+        }
+        std::size_t at = size;
+        while (at > 0 && keyLess(c, list[at - 1])) {
+            list[at] = list[at - 1];
+            --at;
+        }
+        list[at] = c;
+        ++size;
+    }
+
+    // Cheapest pair of unit u with any other unit (level start: every group is one unit).
+    // Branch and bound over the BVH; thread-safe (reads only).
+    double cheapestUnitCost(std::uint32_t u) const {
+        const Group& G = groups_[u];
+        double best = kInf;
+        const BoundQuery bound(model_, G.unit);
+        auto visit = [&](std::uint32_t v) {
+            if (v == u) return;
+            const Group& H = groups_[v];
+            if (bound(model_.regionOf(H.unit)) > best) return;
+            const double cost = G.key < H.key ? model_.mergeCost(G.unit, H.unit)
+                                              : model_.mergeCost(H.unit, G.unit);
+            best = std::min(best, cost);
+        };
+        bvh_.search(bound, visit, best);
+        return best;
+    }
+
+    // Cheapest valid pair of live group g with a group adjacent to it in the graph (an edge
+    // between a member of each), within the budget; no partner when there is none.
+    Candidate cheapestNeighbour(std::uint32_t g, double budget) {
         const Group& G = groups_[g];
         Candidate best;
         best.cost = budget;
         best.group = g;
-        std::uint32_t stamp = 0;
-        if (seen) stamp = ++stamp_;
-        const BoundQuery bound(model_, G.unit);
-        auto visit = [&](std::uint32_t item) {
-            const std::uint32_t h = groupOf_[item];
-            if (h == g) return;
-            if (seen) {
-                if ((*seen)[h] == stamp) return;
-                (*seen)[h] = stamp;
+        const std::uint32_t stamp = ++stamp_;
+        for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
+            for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
+                const std::uint32_t h = groupOf_[graph_.adj[e]];
+                if (h == g || seen_[h] == stamp) continue;
+                seen_[h] = stamp;
+                const Group& H = groups_[h];
+                if (G.size + H.size > cap_) continue;
+                const bool gLow = G.key < H.key;
+                Candidate c;
+                c.cost = gLow ? model_.mergeCost(G.unit, H.unit) : model_.mergeCost(H.unit, G.unit);
+                c.lo = gLow ? G.key : H.key;
+                c.hi = gLow ? H.key : G.key;
+                if (c.cost > budget || (best.partner != kNone && !keyLess(c, best))) continue;
+                best.cost = c.cost;
+                best.lo = c.lo;
+                best.hi = c.hi;
+                best.partner = h;
             }
-            const Group& H = groups_[h];
-            if (G.size + H.size > cap_) return;
-            // The bound of H alone is much cheaper than the exact cost (no overlap volume).
-            if (bound(model_.regionOf(H.unit)) > best.cost) return;
-            const bool gLow = G.key < H.key;
-            const Id lo = gLow ? G.key : H.key;
-            const Id hi = gLow ? H.key : G.key;
-            const double cost =
-                gLow ? model_.mergeCost(G.unit, H.unit) : model_.mergeCost(H.unit, G.unit);
-            if (cost > budget) return;
-            // Before the first hit anything within the budget qualifies.
-            if (best.partner != kNone && !keyLess(cost, lo, hi, best)) return;
-            best.cost = cost;
-            best.lo = lo;
-            best.hi = hi;
-            best.partner = h;
-        };
-        bvh_.search(bound, visit, best.cost);
+        }
         return best;
     }
 
@@ -195,11 +293,7 @@ private:
         const auto id = static_cast<std::uint32_t>(groups_.size());
         groups_.push_back(z);
         seen_.push_back(0);
-        const Aabb box = model_.regionOf(z.unit).box;
-        for (std::uint32_t i = z.head; i != kNone; i = next_[i]) {
-            groupOf_[i] = id;
-            bvh_.grow(i, box, z.unit.fv);
-        }
+        for (std::uint32_t i = z.head; i != kNone; i = next_[i]) groupOf_[i] = id;
         return id;
     }
 
@@ -207,18 +301,19 @@ private:
     const CostModel& model_;
     const std::vector<Id>& units_;
     std::uint32_t cap_;
-    std::vector<std::uint32_t> groupOf_;
+    std::size_t k_; // neighbours kept per unit (rule step 3)
+    std::vector<std::uint32_t> groupOf_; // unit -> live group holding it
     std::vector<std::uint32_t> next_;
-    std::vector<Group> groups_;
+    std::vector<Group> groups_; // 0..n-1: the units; then one per merge
     MergeBvh bvh_;
-    mutable std::vector<std::uint32_t> seen_;
-    mutable std::uint32_t stamp_ = 0;
+    std::vector<Candidate> lists_; // K per unit while the graph is built
+    std::vector<std::uint8_t> listSize_;
+    Graph graph_; // neighbour graph over the units
+    std::vector<std::uint32_t> seen_;
+    std::uint32_t stamp_ = 0;
 };
 
-double lowerMedian(const std::vector<Candidate>& candidates) {
-    std::vector<double> costs;
-    costs.reserve(candidates.size());
-    for (const Candidate& c : candidates) costs.push_back(c.cost);
+double lowerMedian(std::vector<double> costs) {
     const auto mid = costs.begin() + static_cast<std::ptrdiff_t>((costs.size() - 1) / 2);
     std::nth_element(costs.begin(), mid, costs.end());
     return *mid;
@@ -238,24 +333,44 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     if (maxChildren < 2) {
         throw Error(ErrorCode::InvalidArgument, "max children must be at least 2");
     }
+    if (options.neighbours < 1 || options.neighbours > 255 || options.budgetSample < 1 ||
+        options.rebuildRatio < 1) {
+        throw Error(ErrorCode::InvalidArgument, "level merge options out of range");
+    }
     if (units.empty()) return kNoId;
     const std::size_t total = units.size() - 1;
+    std::sort(units.begin(), units.end());
     double budget = 0.0;
+    Graph graph;
+    bool haveGraph = false;
+    std::size_t unitsAtRebuild = 0;
+    std::vector<std::uint32_t> scratch;
     while (units.size() > 1) {
         progress.throwIfCancelled();
-        std::sort(units.begin(), units.end());
-        Level level(builder, units, maxChildren);
-        // Budget from the sample's cheapest partners, then every unit's cheapest partner
-        // within the budget (a bounded search: units without one are discarded quickly).
-        std::vector<std::uint32_t> which;
+        Level level(builder, units, maxChildren, options.neighbours);
+        std::vector<std::uint32_t> sample;
         for (std::size_t i : budgetSample(units.size(), options.budgetSample)) {
-            which.push_back(static_cast<std::uint32_t>(i));
+            sample.push_back(static_cast<std::uint32_t>(i));
         }
-        budget = std::max(budget, lowerMedian(level.cheapestPartners(which, kInf)));
-        which.resize(units.size());
-        std::iota(which.begin(), which.end(), 0u);
-        level.run(level.cheapestPartners(which, budget), budget, progress);
-        units = level.finish();
+        budget = std::max(budget, lowerMedian(level.cheapestCosts(sample)));
+        bool rebuilt = !haveGraph || units.size() * options.rebuildRatio <= unitsAtRebuild;
+        if (rebuilt) {
+            level.buildGraph(budget);
+            unitsAtRebuild = units.size();
+        } else {
+            level.setGraph(std::move(graph));
+        }
+        std::size_t mm = level.run(budget, progress);
+        if (units.size() > 2000) std::fprintf(stderr, "units %zu rebuilt %d merges %zu\n", units.size(), int(rebuilt), mm);
+        if (mm == 0 && !rebuilt) {
+            // The inherited graph has no pair within the budget: rebuild and rerun (nothing
+            // merged yet, so the level starts over from the same units).
+            level.buildGraph(budget);
+            unitsAtRebuild = units.size();
+            level.run(budget, progress);
+        }
+        units = level.finish(graph, scratch);
+        haveGraph = true;
         progress.emit(ProgressInfo{"cluster", total - (units.size() - 1), total, ""});
     }
     return units[0];

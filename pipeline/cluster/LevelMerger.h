@@ -1,50 +1,60 @@
 // Bottom-up hierarchical clustering by levels with a growing cost budget: thesis section 3.2.3
 // (Sappa & Garcia 2004, algorithm 4) with the bounding volumes and costs of sections 4.1-4.2
 // (CostModel.h). This file states the rule; LevelMerger.cpp is the fast implementation and
-// tests/pipeline/cluster/NaiveClusterer.cpp the all-pairs reference that must build the same
+// tests/pipeline/cluster/NaiveClusterer.h the all-pairs reference that must build the same
 // tree.
 //
-// The rule. Input: a set U of units (tree nodes with a ClusterUnit), maxChildren >= 2.
-// 1. Levels. While |U| > 1, run one level over U (thesis: one ADDLEVEL per iteration).
-// 2. Budget. For each u in U, best(u) = min over v in U, v != u, of cost(u, v). Take the
-//    sample of U: with U in ascending id order u_0 < ... < u_{m-1} and s = min(m, S) (S =
-//    LevelMergeOptions::budgetSample, 1024), the units u_floor(i m / s) for i = 0..s-1 (all of
-//    U when m <= S). Q is the lower median of best() over the sample (element floor((s-1)/2)
-//    in ascending order) and the level's budget is B = max(B_previous, Q), B_previous = 0
-//    before the first level. (The sample keeps the budget's cost independent of |U|: only the
-//    sampled units need an unbounded cheapest-partner search; the others search within B.) The thesis merges
-//    "cheapest first" along the MST of each level but leaves open when a level stops; UE4's
-//    implementation of the same algorithm stops each level at a fixed cost per level. A fixed
-//    schedule either wastes levels or merges half the scene at once depending on the scene's
-//    scale, so the budget follows the data: about half the units find a partner within it, so
-//    the unit count shrinks geometrically and the tree has O(log n) levels. It never shrinks,
-//    and it always admits the globally cheapest pair, so every level merges at least once.
-// 3. Groups. A level starts with every unit as its own group. Repeatedly take the pair of
-//    groups (G, H) with the smallest (cost(G + H), min(key G, key H), max(key G, key H)) among
-//    the pairs with cost <= B and |G| + |H| <= maxChildren members, and merge the two groups
-//    into one. The level ends when no pair qualifies.
-//    - key(group) = smallest node id among its members: unique, so ties in cost are broken
-//      deterministically by id.
-//    - the merged group's bounds, fill and cost are CostModel::merge(lower-key group,
-//      higher-key group): a group that absorbs a third member gets F_(AB)C from F_AB and F_C by
-//      eq. 3.1, exactly as a pair would.
-//    This is how a node gets more than two children: a cluster created in this level keeps
-//    absorbing units (or another cluster of this level) while the result stays within the
-//    budget and within maxChildren children.
-// 4. Nodes. At the end of the level each group with >= 2 members becomes a new node whose
-//    children are its members (ascending id); new nodes take ids in ascending key order. A
-//    group of one member carries its unit to the next level unchanged (no single-child nodes).
-//    The next level runs on the new nodes and the carried units.
+// The rule. Input: a set U of units (tree nodes with a ClusterUnit), maxChildren >= 2, and
+// three constants: S = 256 (budget sample), K = 8 (neighbours) and R = 2 (graph rebuild
+// ratio), see LevelMergeOptions.
+// cost(A, B) = CostModel::mergeCost(lower-key operand, higher-key operand); the key of a pair
+// is (cost, lower key, higher key), a total order (ties in cost broken by ids).
+// 1. Levels. While |U| > 1, run one level over U (thesis algorithm 4: one ADDLEVEL per loop).
+// 2. Budget. With U in ascending id order u_0 < ... < u_{m-1} and s = min(m, S), the sample is
+//    u_floor(i m / s) for i = 0..s-1 (all of U when m <= S). best(u) = min over v in U, v != u,
+//    of cost(u, v); Q = lower median of best() over the sample (element floor((s - 1) / 2) in
+//    ascending order); the level's budget is B = max(B_previous, Q), B_previous = 0 at first.
+//    The thesis merges cheapest first along the MST of each level but leaves open when a
+//    level stops; UE4's implementation of the same algorithm stops at a fixed cost per level.
+//    A fixed schedule either wastes levels or merges half the scene at once depending on its
+//    scale, so the budget follows the data: about half the units find a partner within it and
+//    the unit count shrinks geometrically (O(log n) levels). It never shrinks, and it always
+//    admits the globally cheapest pair (whose cost is below every best()), so every level
+//    merges at least once. The sample keeps its price independent of |U|.
+// 3. Neighbour graph (the thesis' adjacency graph, kept sparse). Built at the first level and
+//    whenever |U| * R <= |U at the last build| (R = 2: the graph is rebuilt each time the unit
+//    count halves): N(u) = the K smallest pair keys of u among the pairs (u, v) with
+//    cost <= B; u and v are neighbours when v is in N(u) or u in N(v). At the other levels
+//    the graph is inherited: the previous level's graph contracted by its groups (two units
+//    are neighbours when a member of one neighboured a member of the other). This is the
+//    thesis' update "the new bounding sphere is added to the MST, and any potential clusters
+//    that overlap are updated": a new cluster's candidates are its members' neighbours. If an
+//    inherited graph yields no merge in a level, the graph is rebuilt and the level rerun.
+// 4. Groups. A level starts with every unit as its own group. Repeatedly take the pair of
+//    groups (G, H) with the smallest key among the pairs with a member of G neighbouring a
+//    member of H, cost(G + H) <= B and |G| + |H| <= maxChildren members, and merge the two
+//    groups into one; key(group) = smallest node id among its members; the merged group's
+//    bounds, fill and cost are CostModel::merge(lower-key group, higher-key group), so a group
+//    that absorbs a third member gets F_(AB)C from F_AB and F_C by eq. 3.1 as a pair would.
+//    The level ends when no pair qualifies. This is how a node gets more than two children: a
+//    cluster created in this level keeps absorbing neighbouring units (or another cluster of
+//    this level) while the result stays within the budget and within maxChildren.
+// 5. Nodes. Each group with >= 2 members becomes a new node whose children are its members
+//    (ascending id); new nodes take ids in ascending key order. A group of one member carries
+//    its unit to the next level unchanged (no single-child nodes). The next level runs on the
+//    new nodes and the carried units.
 //
-// Complexity (fast implementation): per level, a BVH over the units (MergeBvh.h) answers
-// "cheapest partner of X" by branch and bound with CostModel::lowerBound; a priority queue
-// holds each group's cheapest partner and is invalidated lazily (an entry whose partner has
-// since merged is recomputed when it reaches the top). A popped entry whose two groups are
-// both alive is the global minimum: every live pair is covered by an entry of one of its
-// groups with a key no larger than its own. Near n log n for spatially coherent scenes; memory
-// linear in the number of units. The per-unit cheapest-partner queries at the start of a level
-// run in parallel (TBB); each writes its own slot, so the tree does not depend on the thread
-// count.
+// Complexity (fast implementation): per level, a BVH forest over the units (MergeBvh.h) gives
+// the sampled best() by branch and bound (CostModel BoundQuery); at rebuilds the neighbour
+// lists come from one dual-tree self-join pruned with pairLowerBound (the rebuilds' sizes
+// halve, so all joins together cost about two joins over the leaves). Merging then only touches
+// the graph: a
+// priority queue holds each group's cheapest neighbour pair and is invalidated lazily (an entry
+// whose partner has since merged is recomputed when it reaches the top). A popped entry whose
+// two groups are alive is the global minimum: every live qualifying pair is covered by an
+// entry of one of its groups with a key no larger than its own. Near n log n for spatially
+// coherent scenes, memory linear in n (K edges per unit). The sampled searches run in parallel
+// (TBB), each writing its own slot, so the tree does not depend on the thread count.
 #pragma once
 
 #include <vector>
@@ -54,8 +64,11 @@
 
 namespace hlod {
 
+// The constants of the rule (tests vary them; production uses the defaults).
 struct LevelMergeOptions {
-    std::size_t budgetSample = 1024; // S of rule 2 (>= 1; tests use small values)
+    std::size_t budgetSample = 256; // S of rule 2, >= 1
+    std::size_t neighbours = 8;     // K of rule 3, 1..255
+    std::size_t rebuildRatio = 2;   // R of rule 3, >= 1 (1: rebuild at every level)
 };
 
 // Clusters `units` (node ids of `builder`, each unit once) into one tree and returns its root

@@ -8,7 +8,7 @@ namespace hlod {
 
 namespace {
 
-constexpr std::uint32_t kLeafSize = 4;
+constexpr std::uint32_t kLeafSize = 2;
 
 void include(Region& into, const Region& r) {
     into.box.expand(r.box);
@@ -51,6 +51,8 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
         roots_.push_back(buildRange(begin, end, items, centers, 0xffffffffu));
         begin = end;
     }
+    ordered_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) ordered_[i] = items[order_[i]];
 }
 
 std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,

@@ -50,7 +50,23 @@ public:
     template <class Bound, class Visit>
     void search(Bound&& bound, Visit&& visit, const double& threshold) const;
 
+    // Self-join: calls visit(i, ri, j, rj) (items and their regions) once for every unordered
+    // pair of distinct items whose nodes are not separated by `exceeds(regionA, regionB)`
+    // (a lower bound above the threshold). Dual-tree traversal, so the descent is shared by
+    // all items instead of one per item.
+    template <class Exceeds, class Visit>
+    void join(Exceeds&& exceeds, Visit&& visit) const {
+        for (std::size_t i = 0; i < roots_.size(); ++i) {
+            for (std::size_t j = i; j < roots_.size(); ++j) {
+                joinNodes(roots_[i], roots_[j], exceeds, visit);
+            }
+        }
+    }
+
 private:
+    template <class Exceeds, class Visit>
+    void joinNodes(std::uint32_t a, std::uint32_t b, Exceeds& exceeds, Visit& visit) const;
+
     std::uint32_t buildRange(std::uint32_t begin, std::uint32_t end,
                              const std::vector<Region>& items,
                              const std::vector<glm::dvec3>& centers, std::uint32_t parent);
@@ -58,6 +74,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> roots_;
     std::vector<std::uint32_t> order_;  // items, leaf ranges contiguous
+    std::vector<Region> ordered_;       // the items' regions in order_ (contiguous leaves)
     std::vector<std::uint32_t> leafOf_; // item -> leaf node
 };
 
@@ -105,6 +122,41 @@ void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) con
             if (far.lb <= threshold) stack[top++] = far;
             if (near.lb <= threshold) stack[top++] = near;
         }
+    }
+}
+
+template <class Exceeds, class Visit>
+void MergeBvh::joinNodes(std::uint32_t a, std::uint32_t b, Exceeds& exceeds, Visit& visit) const {
+    const Node& A = nodes_[a];
+    const Node& B = nodes_[b];
+    if (exceeds(A.region, B.region)) return;
+    if (A.count > 0 && B.count > 0) {
+        for (std::uint32_t i = A.first; i < A.first + A.count; ++i) {
+            const std::uint32_t from = a == b ? i + 1 : B.first;
+            for (std::uint32_t j = from; j < B.first + B.count; ++j) {
+                if (!exceeds(ordered_[i], ordered_[j])) {
+                    visit(order_[i], order_[j]);
+                }
+            }
+        }
+        return;
+    }
+    if (a == b) {
+        joinNodes(A.first, A.first, exceeds, visit);
+        joinNodes(A.first, A.second, exceeds, visit);
+        joinNodes(A.second, A.second, exceeds, visit);
+        return;
+    }
+    // Split the larger node (a leaf cannot split).
+    const glm::dvec3 ea = A.region.box.max - A.region.box.min;
+    const glm::dvec3 eb = B.region.box.max - B.region.box.min;
+    const bool splitA = A.count == 0 && (B.count > 0 || glm::dot(ea, ea) >= glm::dot(eb, eb));
+    if (splitA) {
+        joinNodes(A.first, b, exceeds, visit);
+        joinNodes(A.second, b, exceeds, visit);
+    } else {
+        joinNodes(a, B.first, exceeds, visit);
+        joinNodes(a, B.second, exceeds, visit);
     }
 }
 

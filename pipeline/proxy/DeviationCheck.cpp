@@ -130,7 +130,46 @@ private:
     bool counted_ = false;
 };
 
+struct GridFrame {
+    glm::vec3 lo;
+    float cell;
+    glm::ivec3 dims;
+};
+
+// Cells at least 2 * limit wide (see header) and at most 128 per axis over the box of `a`.
+GridFrame frameFor(std::span<const glm::vec3> positions, std::span<const std::uint32_t> a,
+                   float limit) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (std::uint32_t v : a) {
+        lo = glm::min(lo, positions[v]);
+        hi = glm::max(hi, positions[v]);
+    }
+    const float extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, limit});
+    const float cell = std::max(2.0f * limit, extent / 128.0f) * 1.0001f;
+    lo -= glm::vec3(cell);
+    return GridFrame{lo, cell, glm::ivec3(glm::floor((hi - lo) / cell)) + 2};
+}
+
 } // namespace
+
+bool withinDistanceOf(std::span<const glm::vec3> meshPositions,
+                      std::span<const std::uint32_t> mesh,
+                      std::span<const glm::vec3> referencePositions,
+                      std::span<const std::uint32_t> reference, double limitMetres) {
+    if (mesh.empty()) return true;
+    if (reference.empty()) return false;
+    const auto limit = static_cast<float>(limitMetres);
+    const GridFrame f = frameFor(referencePositions, reference, limit);
+    const TriangleGrid grid(referencePositions, reference, f.lo, f.cell, f.dims);
+    for (std::size_t t = 0; t + 2 < mesh.size(); t += 3) {
+        const glm::vec3 &a = meshPositions[mesh[t]], &b = meshPositions[mesh[t + 1]],
+                        &c = meshPositions[mesh[t + 2]];
+        for (const glm::vec3& p : {a, (a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f}) {
+            if (!grid.anyWithin(p, limit)) return false;
+        }
+    }
+    return true;
+}
 
 bool withinDeviation(std::span<const glm::vec3> positions,
                      std::span<const std::uint32_t> original,

@@ -2,6 +2,7 @@
 // content cache (thesis 5.3's postfix traversal, parallel), see ProxyBaker.h.
 #include "pipeline/proxy/ProxyBaker.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -75,6 +76,9 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
         h.addValue(params.remesh.keepVoxels);
         h.addValue(params.remesh.adaptivity);
         h.addValue(params.remesh.maxVoxelsPerAxis);
+        h.addValue(params.remesh.decimateBelowTriangles);
+        h.addValue(params.decimate.weldFraction);
+        h.addValue(params.decimate.simplifyFraction);
         break;
     case ProxyMethod::Sloppy: break;
     }
@@ -148,8 +152,15 @@ ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& param
                     const Progress& progress) {
     switch (params.method) {
     case ProxyMethod::Decimate: return decimateProxy(std::move(input), errorBudget, params.decimate);
-    case ProxyMethod::Remesh:
-        return remeshProxy(std::move(input), errorBudget, progress, params.remesh);
+    case ProxyMethod::Remesh: {
+        // Both meet the budget; the shell is kept only when it is not larger, so remeshing
+        // never inflates a proxy (a closed shell of a few low-poly parts can be).
+        ProxyMesh decimated = decimateProxy(input, errorBudget, params.decimate);
+        const auto small = static_cast<std::size_t>(std::max(0, params.remesh.decimateBelowTriangles));
+        if (decimated.triangleCount() <= small) return decimated;
+        ProxyMesh shell = remeshProxy(std::move(input), errorBudget, progress, params.remesh);
+        return shell.triangleCount() <= decimated.triangleCount() ? shell : decimated;
+    }
     case ProxyMethod::Sloppy: return sloppyProxy(std::move(input), errorBudget);
     }
     return input;

@@ -72,6 +72,8 @@ std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree
                                            const BakeParams& params);
 
 // One node's proxy from its already aggregated input (the per-node step of bakeProxies).
+// For `remesh` this is the smaller of the shell and the `decimate` proxy (both within the
+// budget), and just the latter when it is tiny (RemeshOptions::decimateBelowTriangles).
 ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& params,
                     const Progress& progress = {});
 

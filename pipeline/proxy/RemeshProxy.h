@@ -37,6 +37,9 @@ struct RemeshOptions {
     float adaptivity = 0.25f;      // OpenVDB volumeToMesh adaptivity (merges flat regions)
     // Voxel count guard: above this many voxels along the largest axis h grows instead.
     int maxVoxelsPerAxis = 1024;
+    // Baker policy (ProxyBaker.cpp makeProxy): a node whose `decimate` proxy has at most this
+    // many triangles keeps it without remeshing; a shell never beats it and costs a voxel grid.
+    int decimateBelowTriangles = 128;
 };
 
 ProxyMesh remeshProxy(ProxyMesh input, double maxError, const Progress& progress = {},

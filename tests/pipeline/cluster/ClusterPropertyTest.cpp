@@ -82,26 +82,32 @@ TEST(ClusterProperty, FastEqualsNaiveForFractionalK) {
     EXPECT_EQ(test::treeDifference(buildClusterTree(scene, p), naiveTree(scene, p)), "");
 }
 
-TEST(ClusterProperty, FastEqualsNaiveWithASampledBudget) {
-    // Budget samples smaller than the unit count (production uses 1024, far above the sizes
-    // the naive reference can handle): the sampled median must match too.
+TEST(ClusterProperty, FastEqualsNaiveForOtherRuleConstants) {
+    // Budget samples smaller than the unit count (production uses 256, near the sizes the
+    // naive reference can handle), short or long neighbour lists, graphs rebuilt at every level
+    // or inherited until the fallback rebuild (R = 1000).
     const Scene scene = test::makeRandomScene({250, test::Layout::Clumped, 12, 0.05});
     for (const Model& model : kModels) {
-        for (std::size_t sample : {1u, 7u, 64u}) {
+        for (const LevelMergeOptions options :
+             {LevelMergeOptions{1, 8, 2}, LevelMergeOptions{7, 1, 1}, LevelMergeOptions{64, 3, 4},
+              LevelMergeOptions{1000, 40, 1}, LevelMergeOptions{256, 2, 1000}}) {
             ClusterParams p;
             p.volume = model.volume;
             p.k = model.k;
+            p.maxChildren = 6;
             const CostModel cost(p.volume, p.k);
-            const LevelMergeOptions options{sample};
             const ClusterTree fast = buildConstrainedTree(
                 scene, p, cost, [&](TreeBuilder& b, std::vector<Id> u, int c, const Progress& g) {
                     return mergeLevelsWith(b, std::move(u), c, g, options);
                 });
             const ClusterTree reference = buildConstrainedTree(
                 scene, p, cost, [&](TreeBuilder& b, std::vector<Id> u, int c, const Progress& g) {
-                    return test::naiveMergeLevels(b, std::move(u), c, g, sample);
+                    return test::naiveMergeLevels(b, std::move(u), c, g, options);
                 });
-            EXPECT_EQ(test::treeDifference(fast, reference), "") << "sample " << sample;
+            EXPECT_EQ(test::treeDifference(fast, reference), "")
+                << "S " << options.budgetSample << " K " << options.neighbours << " R "
+                << options.rebuildRatio;
+            EXPECT_EQ(validateClusterTree(fast, scene.instances.size()), "");
         }
     }
 }
