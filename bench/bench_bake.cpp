@@ -29,7 +29,8 @@ struct Workload {
 Id addNode(ClusterTree& tree, ClusterNode node) {
     tree.nodes.push_back(std::move(node));
     const Id id = static_cast<Id>(tree.nodes.size() - 1);
-    for (Id c : tree.nodes[id].children) tree.nodes[c].parent = id;
+    for (Id c : tree.nodes[id].children)
+        tree.nodes[c].parent = id;
     return id;
 }
 
@@ -39,7 +40,8 @@ Id buildQuad(Workload& w, const std::vector<Id>& leafOf, int side, int x0, int y
     ClusterNode n;
     const int half = size / 2;
     for (int q = 0; q < 4; ++q) {
-        n.children.push_back(buildQuad(w, leafOf, side, x0 + (q % 2) * half, y0 + (q / 2) * half, half));
+        n.children.push_back(
+            buildQuad(w, leafOf, side, x0 + (q % 2) * half, y0 + (q / 2) * half, half));
     }
     for (Id c : n.children) {
         n.box.expand(w.tree.nodes[c].box);
@@ -81,8 +83,10 @@ const Workload& workload() {
             if (n.isLeaf()) continue;
             std::vector<AggregatePart> parts;
             for (Id c : n.children) {
-                if (out.tree.nodes[c].isLeaf()) parts.push_back({out.tree.nodes[c].instance, nullptr});
-                else parts.push_back({kNoId, &baked.nodes[c].proxy});
+                if (out.tree.nodes[c].isLeaf())
+                    parts.push_back({out.tree.nodes[c].instance, nullptr});
+                else
+                    parts.push_back({kNoId, &baked.nodes[c].proxy});
             }
             out.inputs.push_back(aggregateParts(out.scene, parts, baked.nodes[id].proxy.origin));
             out.budgets.push_back(baked.nodes[id].errorBudget);
@@ -141,8 +145,15 @@ void BM_RawMeshoptSimplify(benchmark::State& state) {
 BENCHMARK(BM_RawMeshoptSimplify)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BakeDecimate)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_BakeMethod, sloppy, ProxyMethod::Sloppy)
-    ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_BakeMethod, remesh, ProxyMethod::Remesh)
-    ->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -73,7 +73,8 @@ void BM_Cluster(benchmark::State& state) {
 void clusterArgs(benchmark::internal::Benchmark* b) {
     for (long n : {1000L, 10000L, 100000L, 1000000L}) {
         for (long layout : {0L, 1L}) {
-            for (long volume : {0L, 1L, 2L}) b->Args({n, layout, volume});
+            for (long volume : {0L, 1L, 2L})
+                b->Args({n, layout, volume});
         }
     }
 }
@@ -85,7 +86,8 @@ std::pair<hlod::TreeBuilder, std::vector<hlod::Id>> leaves(const hlod::Scene& s,
     const hlod::CostModel model(volume, volume == hlod::VolumeType::Aabb ? 1.0 : 0.0);
     const auto bounds = hlod::computeInstanceBounds(s);
     std::vector<hlod::Aabb> boxes;
-    for (const auto& b : bounds) boxes.push_back(b.box);
+    for (const auto& b : bounds)
+        boxes.push_back(b.box);
     const double minExtent = hlod::clusteringMinExtent(boxes);
     hlod::TreeBuilder builder(model);
     std::vector<hlod::Id> units;
@@ -96,12 +98,11 @@ std::pair<hlod::TreeBuilder, std::vector<hlod::Id>> leaves(const hlod::Scene& s,
     return {std::move(builder), std::move(units)};
 }
 
-template <bool Naive>
-void mergeOnly(benchmark::State& state) {
+template <bool Naive> void mergeOnly(benchmark::State& state) {
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
     const auto n = static_cast<std::size_t>(state.range(0));
-    const hlod::VolumeType volume = state.range(1) ? hlod::VolumeType::Aabb
-                                                   : hlod::VolumeType::Sphere;
+    const hlod::VolumeType volume =
+        state.range(1) ? hlod::VolumeType::Aabb : hlod::VolumeType::Sphere;
     const hlod::Scene& s = scene(n, Layout::Clumped);
     for (auto _ : state) {
         state.PauseTiming();
@@ -121,9 +122,7 @@ BENCHMARK(BM_NaiveReference)
     ->ArgsProduct({{2000, 5000}, {0, 1}})
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
-BENCHMARK(BM_FastReference)
-    ->ArgsProduct({{2000, 5000}, {0, 1}})
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastReference)->ArgsProduct({{2000, 5000}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -46,8 +46,7 @@ Sphere fromThree(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) 
         }
         return best;
     }
-    const glm::dvec3 offset =
-        glm::cross(glm::dot(u, u) * v - glm::dot(v, v) * u, n) / (2.0 * n2);
+    const glm::dvec3 offset = glm::cross(glm::dot(u, u) * v - glm::dot(v, v) * u, n) / (2.0 * n2);
     return Sphere{c + offset, glm::length(offset)};
 }
 
@@ -62,10 +61,10 @@ Sphere fromFour(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
     const double det = glm::dot(u, glm::cross(v, w));
     const double scale = std::max({glm::length(u), glm::length(v), glm::length(w)});
     if (std::abs(det) > 1e-12 * scale * scale * scale) {
-        const glm::dvec3 offset = (glm::dot(u, u) * glm::cross(v, w) +
-                                   glm::dot(v, v) * glm::cross(w, u) +
-                                   glm::dot(w, w) * glm::cross(u, v)) /
-                                  (2.0 * det);
+        const glm::dvec3 offset =
+            (glm::dot(u, u) * glm::cross(v, w) + glm::dot(v, v) * glm::cross(w, u) +
+             glm::dot(w, w) * glm::cross(u, v)) /
+            (2.0 * det);
         return Sphere{a + offset, glm::length(offset)};
     }
     const std::array<glm::dvec3, 4> p{a, b, c, d};
@@ -145,7 +144,8 @@ Sphere minimumBoundingSphere(std::span<const glm::dvec3> points) {
     const glm::dvec3 origin = (lo + hi) * 0.5;
     std::vector<glm::dvec3> pts;
     pts.reserve(points.size());
-    for (const glm::dvec3& p : points) pts.push_back(p - origin);
+    for (const glm::dvec3& p : points)
+        pts.push_back(p - origin);
     shuffle(pts);
 
     Sphere s{pts[0], 0.0};
@@ -154,7 +154,8 @@ Sphere minimumBoundingSphere(std::span<const glm::dvec3> points) {
     }
     // Containment guarantee: grow to the farthest point (a no-op up to rounding).
     double r2 = s.radius * s.radius;
-    for (const glm::dvec3& p : pts) r2 = std::max(r2, glm::dot(p - s.center, p - s.center));
+    for (const glm::dvec3& p : pts)
+        r2 = std::max(r2, glm::dot(p - s.center, p - s.center));
     return Sphere{s.center + origin, std::sqrt(r2)};
 }
 

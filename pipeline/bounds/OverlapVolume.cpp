@@ -7,9 +7,7 @@
 
 namespace hlod {
 
-double Sphere::volume() const {
-    return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
-}
+double Sphere::volume() const { return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius; }
 
 double sphereIntersectionVolume(const Sphere& a, const Sphere& b) {
     const double d = glm::length(b.center - a.center);

@@ -14,8 +14,8 @@ ClusterTree buildClusterTree(const Scene& scene, const ClusterParams& params,
     validateConstraints(params, scene.instances.size());
     switch (params.volume) {
     case VolumeType::Sphere:
-        return buildConstrainedTree(scene, params, CostModel(VolumeType::Sphere, 0.0),
-                                    mergeLevels, progress);
+        return buildConstrainedTree(scene, params, CostModel(VolumeType::Sphere, 0.0), mergeLevels,
+                                    progress);
     case VolumeType::Aabb:
         return buildConstrainedTree(scene, params, CostModel(VolumeType::Aabb, params.k),
                                     mergeLevels, progress);

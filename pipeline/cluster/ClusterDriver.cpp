@@ -22,7 +22,8 @@ constexpr double kFallbackMinExtent = 1e-6;
 
 double clusteringMinExtent(const std::vector<Aabb>& boxes) {
     Aabb all;
-    for (const Aabb& b : boxes) all.expand(b);
+    for (const Aabb& b : boxes)
+        all.expand(b);
     const double d = all.diagonal();
     return d > 0.0 ? d * kRelativeMinExtent : kFallbackMinExtent;
 }
@@ -39,8 +40,8 @@ void validateConstraints(const ClusterParams& params, std::size_t instanceCount)
         }
     };
     for (std::size_t g = 0; g < params.lockedGroups.size(); ++g) {
-        if (params.lockedGroups[g].empty()) invalid("locked group " + std::to_string(g) +
-                                                    " is empty");
+        if (params.lockedGroups[g].empty())
+            invalid("locked group " + std::to_string(g) + " is empty");
         for (Id id : params.lockedGroups[g]) {
             check(id);
             if (state[id] != 0) {
@@ -67,7 +68,8 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
     const std::vector<InstanceBounds> bounds = computeInstanceBounds(scene, progress);
     std::vector<Aabb> boxes;
     boxes.reserve(bounds.size());
-    for (const InstanceBounds& b : bounds) boxes.push_back(b.box);
+    for (const InstanceBounds& b : bounds)
+        boxes.push_back(b.box);
     const double minExtent = clusteringMinExtent(boxes);
 
     TreeBuilder builder(model);
@@ -80,7 +82,8 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
         std::vector<Id> members(group.begin(), group.end());
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
-        for (Id id : members) taken[id] = 1;
+        for (Id id : members)
+            taken[id] = 1;
         const Id root = merge(builder, members, params.maxChildren, progress);
         builder.setLocked(root, true);
         units.push_back(root);
@@ -88,7 +91,8 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
     std::vector<Id> excluded(params.excluded.begin(), params.excluded.end());
     std::sort(excluded.begin(), excluded.end());
     excluded.erase(std::unique(excluded.begin(), excluded.end()), excluded.end());
-    for (Id id : excluded) taken[id] = 1;
+    for (Id id : excluded)
+        taken[id] = 1;
     for (Id i = 0; i < bounds.size(); ++i) {
         if (!taken[i]) units.push_back(i);
     }

@@ -7,7 +7,9 @@ namespace {
 
 nlohmann::json vec(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
-nlohmann::json idOrNull(Id id) { return id == kNoId ? nlohmann::json(nullptr) : nlohmann::json(id); }
+nlohmann::json idOrNull(Id id) {
+    return id == kNoId ? nlohmann::json(nullptr) : nlohmann::json(id);
+}
 
 } // namespace
 

@@ -7,10 +7,14 @@ namespace hlod {
 
 const char* toString(VolumeType v) {
     switch (v) {
-    case VolumeType::Sphere: return "sphere";
-    case VolumeType::Aabb: return "aabb";
-    case VolumeType::Octree: return "octree";
-    case VolumeType::Original: return "original";
+    case VolumeType::Sphere:
+        return "sphere";
+    case VolumeType::Aabb:
+        return "aabb";
+    case VolumeType::Octree:
+        return "octree";
+    case VolumeType::Original:
+        return "original";
     }
     return "unknown";
 }
@@ -26,7 +30,8 @@ VolumeType volumeTypeFromString(const std::string& s) {
 
 std::size_t ClusterTree::leafCount() const {
     std::size_t n = 0;
-    for (const ClusterNode& node : nodes) n += node.isLeaf() ? 1 : 0;
+    for (const ClusterNode& node : nodes)
+        n += node.isLeaf() ? 1 : 0;
     return n;
 }
 

@@ -10,7 +10,9 @@ namespace hlod {
 
 namespace {
 
-std::string at(Id id, const std::string& what) { return "node " + std::to_string(id) + ": " + what; }
+std::string at(Id id, const std::string& what) {
+    return "node " + std::to_string(id) + ": " + what;
+}
 
 bool boxContains(const Aabb& outer, const Aabb& inner) {
     const double tol = 1e-9 * std::max(1.0, outer.diagonal()) + 1e-9;
@@ -69,7 +71,8 @@ std::string validateClusterTree(const ClusterTree& tree, std::size_t instanceCou
         if (std::string e = checkNode(tree, id, instanceCount, instanceSeen); !e.empty()) {
             return e;
         }
-        for (Id c : tree.nodes[id].children) stack.push_back(c);
+        for (Id c : tree.nodes[id].children)
+            stack.push_back(c);
     }
     if (count != tree.nodes.size()) return "some nodes are not reachable from the root";
     for (std::size_t i = 0; i < instanceCount; ++i) {

@@ -49,8 +49,8 @@ struct ClusterUnit {
 // What a spatial search knows about a set of clusters (a BVH node, MergeBvh.h): lower bounds
 // of their size and an upper bound of their F*V.
 struct Region {
-    Aabb box;            // holds every cluster's search volume
-    double maxFv = 0.0;  // largest F*V
+    Aabb box;           // holds every cluster's search volume
+    double maxFv = 0.0; // largest F*V
     double minRadius = 0.0;
     double minVolume = 0.0;
     glm::dvec3 minExtent{0.0}; // smallest box extent per axis
@@ -110,7 +110,6 @@ public:
     }
 
 private:
-
     VolumeType volume_;
     double k_;
 };
@@ -157,17 +156,18 @@ public:
             const double r3 = r * r * r;
             return r3 * std::max(1.0, kSphereVolume * r3 / fvSum) * kSafety;
         }
-        const double ex = minHullLength(x_.box.min.x, x_.box.max.x, g.box.min.x, g.box.max.x,
-                                        g.minExtent.x);
-        const double ey = minHullLength(x_.box.min.y, x_.box.max.y, g.box.min.y, g.box.max.y,
-                                        g.minExtent.y);
-        const double ez = minHullLength(x_.box.min.z, x_.box.max.z, g.box.min.z, g.box.max.z,
-                                        g.minExtent.z);
+        const double ex =
+            minHullLength(x_.box.min.x, x_.box.max.x, g.box.min.x, g.box.max.x, g.minExtent.x);
+        const double ey =
+            minHullLength(x_.box.min.y, x_.box.max.y, g.box.min.y, g.box.max.y, g.minExtent.y);
+        const double ez =
+            minHullLength(x_.box.min.z, x_.box.max.z, g.box.min.z, g.box.max.z, g.minExtent.z);
         const double v = std::max(ex * ey * ez, g.minVolume);
         double bound = v * std::max(1.0, v / fvSum) * kSafety;
         if (hasShape_) {
             const glm::dvec3 ub = glm::max(x_.box.max, g.box.max) - glm::min(x_.box.min, g.box.min);
-            const double shape = std::max(ex, std::max(ey, ez)) / std::min(ub.x, std::min(ub.y, ub.z));
+            const double shape =
+                std::max(ex, std::max(ey, ez)) / std::min(ub.x, std::min(ub.y, ub.z));
             bound *= model_.powK(std::max(1.0, shape));
         }
         return bound;
@@ -190,8 +190,8 @@ private:
 // - Box: per axis, intervals of lengths >= w_a in [a_lo, a_hi] and >= w_b in [b_lo, b_hi] have
 //   a hull of at least max(w_a, w_b, b_lo - a_hi + w_a + w_b, a_lo - b_hi + w_a + w_b).
 // pairLowerBound(model, a, b) > threshold, without divisions (the self-join's inner loop).
-[[gnu::always_inline]] inline bool pairBoundExceeds(const CostModel& model, const Region& a, const Region& b,
-                             double threshold) {
+[[gnu::always_inline]] inline bool pairBoundExceeds(const CostModel& model, const Region& a,
+                                                    const Region& b, double threshold) {
     constexpr double kSafety = 1.0 - 1e-9;
     constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
     const double fvSum = a.maxFv + b.maxFv;
@@ -207,9 +207,9 @@ private:
         return r3 * std::max(fvSum, kSphereVolume * r3) * kSafety > threshold * fvSum;
     }
     const glm::dvec3 sum = a.minExtent + b.minExtent;
-    const glm::dvec3 ext = glm::max(
-        glm::max(a.minExtent, b.minExtent),
-        glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
+    const glm::dvec3 ext =
+        glm::max(glm::max(a.minExtent, b.minExtent),
+                 glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
     const double v = std::max(ext.x * ext.y * ext.z, std::max(a.minVolume, b.minVolume));
     double lhs = v * std::max(fvSum, v) * kSafety;
     double rhs = threshold * fvSum;
@@ -239,9 +239,9 @@ inline double pairLowerBound(const CostModel& model, const Region& a, const Regi
         return r3 * std::max(1.0, kSphereVolume * r3 / fvSum) * kSafety;
     }
     const glm::dvec3 sum = a.minExtent + b.minExtent;
-    const glm::dvec3 ext = glm::max(
-        glm::max(a.minExtent, b.minExtent),
-        glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
+    const glm::dvec3 ext =
+        glm::max(glm::max(a.minExtent, b.minExtent),
+                 glm::max(b.box.min - a.box.max + sum, a.box.min - b.box.max + sum));
     const double v = std::max(ext.x * ext.y * ext.z, std::max(a.minVolume, b.minVolume));
     double bound = v * std::max(1.0, v / fvSum) * kSafety;
     if (model.k() != 0.0) {

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <limits>
 #include <queue>
-#include <cstdio>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -90,8 +89,8 @@ public:
         return out;
     }
 
-    // Rule step 3: every unit's K cheapest pairs within the budget, from one spatial
-    // self-join, made symmetric into the level's neighbour graph.
+    // Rule step 3: every unit's K cheapest pairs within `budget` (the graph budget), from one
+    // spatial self-join, made symmetric into the level's neighbour graph.
     void buildGraph(double budget) {
         const std::size_t n = units_.size();
         lists_.assign(n * k_, Candidate{});
@@ -119,7 +118,8 @@ public:
                 ++g.start[lists_[u * k_ + k].partner + 1];
             }
         }
-        for (std::size_t u = 0; u < n; ++u) g.start[u + 1] += g.start[u];
+        for (std::size_t u = 0; u < n; ++u)
+            g.start[u + 1] += g.start[u];
         g.adj.resize(g.start[n]);
         std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
         for (std::uint32_t u = 0; u < n; ++u) {
@@ -190,7 +190,8 @@ public:
         std::sort(next.begin(), next.end());
         // Position of each live group in the next level.
         scratch.assign(groups_.size(), kNone);
-        for (std::uint32_t p = 0; p < next.size(); ++p) scratch[next[p].second] = p;
+        for (std::uint32_t p = 0; p < next.size(); ++p)
+            scratch[next[p].second] = p;
         contracted.start.assign(1, 0);
         contracted.adj.clear();
         std::vector<std::uint32_t> mark(next.size(), kNone);
@@ -207,7 +208,8 @@ public:
             contracted.start.push_back(static_cast<std::uint32_t>(contracted.adj.size()));
         }
         std::vector<Id> units(next.size());
-        for (std::size_t p = 0; p < next.size(); ++p) units[p] = next[p].first;
+        for (std::size_t p = 0; p < next.size(); ++p)
+            units[p] = next[p].first;
         return units;
     }
 
@@ -239,8 +241,8 @@ private:
             if (v == u) return;
             const Group& H = groups_[v];
             if (bound(model_.regionOf(H.unit)) > best) return;
-            const double cost = G.key < H.key ? model_.mergeCost(G.unit, H.unit)
-                                              : model_.mergeCost(H.unit, G.unit);
+            const double cost =
+                G.key < H.key ? model_.mergeCost(G.unit, H.unit) : model_.mergeCost(H.unit, G.unit);
             best = std::min(best, cost);
         };
         bvh_.search(bound, visit, best);
@@ -255,7 +257,7 @@ private:
         best.cost = budget;
         best.group = g;
         const std::uint32_t stamp = ++stamp_;
-        for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
+        for (std::uint32_t m = G.head; m != kNone; m = kNone) {
             for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
                 const std::uint32_t h = groupOf_[graph_.adj[e]];
                 if (h == g || seen_[h] == stamp) continue;
@@ -293,7 +295,8 @@ private:
         const auto id = static_cast<std::uint32_t>(groups_.size());
         groups_.push_back(z);
         seen_.push_back(0);
-        for (std::uint32_t i = z.head; i != kNone; i = next_[i]) groupOf_[i] = id;
+        for (std::uint32_t i = z.head; i != kNone; i = next_[i])
+            groupOf_[i] = id;
         return id;
     }
 
@@ -301,7 +304,7 @@ private:
     const CostModel& model_;
     const std::vector<Id>& units_;
     std::uint32_t cap_;
-    std::size_t k_; // neighbours kept per unit (rule step 3)
+    std::size_t k_;                      // neighbours kept per unit (rule step 3)
     std::vector<std::uint32_t> groupOf_; // unit -> live group holding it
     std::vector<std::uint32_t> next_;
     std::vector<Group> groups_; // 0..n-1: the units; then one per merge
@@ -324,7 +327,8 @@ double lowerMedian(std::vector<double> costs) {
 std::vector<std::size_t> budgetSample(std::size_t units, std::size_t sampleSize) {
     const std::size_t s = std::min(units, std::max<std::size_t>(sampleSize, 1));
     std::vector<std::size_t> out(s);
-    for (std::size_t i = 0; i < s; ++i) out[i] = i * units / s;
+    for (std::size_t i = 0; i < s; ++i)
+        out[i] = i * units / s;
     return out;
 }
 
@@ -334,7 +338,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
         throw Error(ErrorCode::InvalidArgument, "max children must be at least 2");
     }
     if (options.neighbours < 1 || options.neighbours > 255 || options.budgetSample < 1 ||
-        options.rebuildRatio < 1) {
+        options.rebuildRatio < 1 || !(options.graphBudgetFactor >= 1.0)) {
         throw Error(ErrorCode::InvalidArgument, "level merge options out of range");
     }
     if (units.empty()) return kNoId;
@@ -344,6 +348,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     Graph graph;
     bool haveGraph = false;
     std::size_t unitsAtRebuild = 0;
+    double graphBudget = 0.0;
     std::vector<std::uint32_t> scratch;
     while (units.size() > 1) {
         progress.throwIfCancelled();
@@ -353,19 +358,20 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
             sample.push_back(static_cast<std::uint32_t>(i));
         }
         budget = std::max(budget, lowerMedian(level.cheapestCosts(sample)));
-        bool rebuilt = !haveGraph || units.size() * options.rebuildRatio <= unitsAtRebuild;
+        const bool rebuilt = !haveGraph || budget > graphBudget ||
+                             units.size() * options.rebuildRatio <= unitsAtRebuild;
         if (rebuilt) {
-            level.buildGraph(budget);
+            graphBudget = budget * options.graphBudgetFactor;
+            level.buildGraph(graphBudget);
             unitsAtRebuild = units.size();
         } else {
             level.setGraph(std::move(graph));
         }
-        std::size_t mm = level.run(budget, progress);
-        if (units.size() > 2000) std::fprintf(stderr, "units %zu rebuilt %d merges %zu\n", units.size(), int(rebuilt), mm);
-        if (mm == 0 && !rebuilt) {
+        if (level.run(budget, progress) == 0 && !rebuilt) {
             // The inherited graph has no pair within the budget: rebuild and rerun (nothing
             // merged yet, so the level starts over from the same units).
-            level.buildGraph(budget);
+            graphBudget = budget * options.graphBudgetFactor;
+            level.buildGraph(graphBudget);
             unitsAtRebuild = units.size();
             level.run(budget, progress);
         }

@@ -5,8 +5,8 @@
 // tree.
 //
 // The rule. Input: a set U of units (tree nodes with a ClusterUnit), maxChildren >= 2, and
-// three constants: S = 256 (budget sample), K = 8 (neighbours) and R = 2 (graph rebuild
-// ratio), see LevelMergeOptions.
+// four constants: S = 256 (budget sample), K = 8 (neighbours), R = 2 (graph rebuild ratio)
+// and G = 2 (graph budget factor), see LevelMergeOptions.
 // cost(A, B) = CostModel::mergeCost(lower-key operand, higher-key operand); the key of a pair
 // is (cost, lower key, higher key), a total order (ties in cost broken by ids).
 // 1. Levels. While |U| > 1, run one level over U (thesis algorithm 4: one ADDLEVEL per loop).
@@ -21,15 +21,16 @@
 //    the unit count shrinks geometrically (O(log n) levels). It never shrinks, and it always
 //    admits the globally cheapest pair (whose cost is below every best()), so every level
 //    merges at least once. The sample keeps its price independent of |U|.
-// 3. Neighbour graph (the thesis' adjacency graph, kept sparse). Built at the first level and
-//    whenever |U| * R <= |U at the last build| (R = 2: the graph is rebuilt each time the unit
-//    count halves): N(u) = the K smallest pair keys of u among the pairs (u, v) with
-//    cost <= B; u and v are neighbours when v is in N(u) or u in N(v). At the other levels
-//    the graph is inherited: the previous level's graph contracted by its groups (two units
-//    are neighbours when a member of one neighboured a member of the other). This is the
-//    thesis' update "the new bounding sphere is added to the MST, and any potential clusters
-//    that overlap are updated": a new cluster's candidates are its members' neighbours. If an
-//    inherited graph yields no merge in a level, the graph is rebuilt and the level rerun.
+// 3. Neighbour graph (the thesis' adjacency graph, kept sparse). Rebuilt at the first level,
+//    whenever B exceeds the budget of the last build, and whenever |U| * R <= |U at the last
+//    build| (R = 2: each time the unit count halves): N(u) = the K smallest pair keys of u
+//    among the pairs (u, v) with cost <= G * B (G = 2, the graph budget); u and v are
+//    neighbours when v is in N(u) or u in N(v). At the other levels the graph is inherited:
+//    the previous level's graph contracted by its groups (two units are neighbours when a
+//    member of one neighboured a member of the other). This is the thesis' update "the new
+//    bounding sphere is added to the MST, and any potential clusters that overlap are
+//    updated": a new cluster's candidates are its members' neighbours. If an inherited graph
+//    yields no merge in a level, the graph is rebuilt and the level rerun.
 // 4. Groups. A level starts with every unit as its own group. Repeatedly take the pair of
 //    groups (G, H) with the smallest key among the pairs with a member of G neighbouring a
 //    member of H, cost(G + H) <= B and |G| + |H| <= maxChildren members, and merge the two
@@ -46,9 +47,8 @@
 //
 // Complexity (fast implementation): per level, a BVH forest over the units (MergeBvh.h) gives
 // the sampled best() by branch and bound (CostModel BoundQuery); at rebuilds the neighbour
-// lists come from one dual-tree self-join pruned with pairLowerBound (the rebuilds' sizes
-// halve, so all joins together cost about two joins over the leaves). Merging then only touches
-// the graph: a
+// lists come from one dual-tree self-join pruned with pairBoundExceeds. Merging then only
+// touches the graph: a
 // priority queue holds each group's cheapest neighbour pair and is invalidated lazily (an entry
 // whose partner has since merged is recomputed when it reaches the top). A popped entry whose
 // two groups are alive is the global minimum: every live qualifying pair is covered by an
@@ -69,6 +69,7 @@ struct LevelMergeOptions {
     std::size_t budgetSample = 256; // S of rule 2, >= 1
     std::size_t neighbours = 8;     // K of rule 3, 1..255
     std::size_t rebuildRatio = 2;   // R of rule 3, >= 1 (1: rebuild at every level)
+    double graphBudgetFactor = 2.0; // G of rule 3, >= 1
 };
 
 // Clusters `units` (node ids of `builder`, each unit once) into one tree and returns its root

@@ -38,27 +38,28 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     if (n == 0) return;
     nodes_.reserve(2 * (n / kLeafSize + 1) + 64);
     std::vector<glm::dvec3> centers(n);
-    for (std::uint32_t i = 0; i < n; ++i) centers[i] = items[i].box.center();
+    for (std::uint32_t i = 0; i < n; ++i)
+        centers[i] = items[i].box.center();
     // Items grouped by size class (stable: ties keep item order), one hierarchy per class.
     std::iota(order_.begin(), order_.end(), 0u);
-    std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return sizeClass[a] < sizeClass[b];
-    });
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return sizeClass[a] < sizeClass[b]; });
     std::uint32_t begin = 0;
     while (begin < n) {
         std::uint32_t end = begin + 1;
-        while (end < n && sizeClass[order_[end]] == sizeClass[order_[begin]]) ++end;
+        while (end < n && sizeClass[order_[end]] == sizeClass[order_[begin]])
+            ++end;
         roots_.push_back(buildRange(begin, end, items, centers, 0xffffffffu));
         begin = end;
     }
     ordered_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) ordered_[i] = items[order_[i]];
+    for (std::uint32_t i = 0; i < n; ++i)
+        ordered_[i] = items[order_[i]];
 }
 
 std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                                    const std::vector<Region>& items,
-                                   const std::vector<glm::dvec3>& centers,
-                                   std::uint32_t parent) {
+                                   const std::vector<glm::dvec3>& centers, std::uint32_t parent) {
     const auto id = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back(Node{});
     nodes_[id].parent = parent;
@@ -72,7 +73,8 @@ std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
     if (end - begin <= kLeafSize) {
         nodes_[id].first = begin;
         nodes_[id].count = end - begin;
-        for (std::uint32_t i = begin; i < end; ++i) leafOf_[order_[i]] = id;
+        for (std::uint32_t i = begin; i < end; ++i)
+            leafOf_[order_[i]] = id;
         return id;
     }
     const glm::dvec3 e = centerBox.extent();

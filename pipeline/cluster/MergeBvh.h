@@ -54,8 +54,7 @@ public:
     // pair of distinct items whose nodes are not separated by `exceeds(regionA, regionB)`
     // (a lower bound above the threshold). Dual-tree traversal, so the descent is shared by
     // all items instead of one per item.
-    template <class Exceeds, class Visit>
-    void join(Exceeds&& exceeds, Visit&& visit) const {
+    template <class Exceeds, class Visit> void join(Exceeds&& exceeds, Visit&& visit) const {
         for (std::size_t i = 0; i < roots_.size(); ++i) {
             for (std::size_t j = i; j < roots_.size(); ++j) {
                 joinNodes(roots_[i], roots_[j], exceeds, visit);
@@ -110,7 +109,8 @@ void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) con
             if (e.lb > threshold) continue;
             const Node& n = nodes_[e.node];
             if (n.count > 0) {
-                for (std::uint32_t i = n.first; i < n.first + n.count; ++i) visit(order_[i]);
+                for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                    visit(order_[i]);
                 continue;
             }
             const double lbA = bound(nodes_[n.first].region);

@@ -40,12 +40,11 @@ struct Octree {
         for (Id u : units) {
             const Aabb& box = builder.unit(u).box;
             const glm::dvec3 c = box.center();
-            const int o = (c.x >= center.x ? 1 : 0) | (c.y >= center.y ? 2 : 0) |
-                          (c.z >= center.z ? 4 : 0);
-            const glm::dvec3 childCenter =
-                center + glm::dvec3((o & 1) ? childHalf : -childHalf,
-                                    (o & 2) ? childHalf : -childHalf,
-                                    (o & 4) ? childHalf : -childHalf);
+            const int o =
+                (c.x >= center.x ? 1 : 0) | (c.y >= center.y ? 2 : 0) | (c.z >= center.z ? 4 : 0);
+            const glm::dvec3 childCenter = center + glm::dvec3((o & 1) ? childHalf : -childHalf,
+                                                               (o & 2) ? childHalf : -childHalf,
+                                                               (o & 4) ? childHalf : -childHalf);
             if (fits(box, childCenter, childHalf)) {
                 octants[static_cast<std::size_t>(o)].push_back(u);
             } else {
@@ -57,10 +56,9 @@ struct Octree {
         for (int o = 0; o < 8; ++o) {
             std::vector<Id>& list = octants[static_cast<std::size_t>(o)];
             if (list.empty()) continue;
-            const glm::dvec3 childCenter =
-                center + glm::dvec3((o & 1) ? childHalf : -childHalf,
-                                    (o & 2) ? childHalf : -childHalf,
-                                    (o & 4) ? childHalf : -childHalf);
+            const glm::dvec3 childCenter = center + glm::dvec3((o & 1) ? childHalf : -childHalf,
+                                                               (o & 2) ? childHalf : -childHalf,
+                                                               (o & 4) ? childHalf : -childHalf);
             entries.push_back(cell(std::move(list), childCenter, childHalf, depth + 1));
         }
         entries.insert(entries.end(), stuck.begin(), stuck.end());
@@ -78,7 +76,8 @@ Id mergeOctree(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     if (units.empty()) return kNoId;
     std::sort(units.begin(), units.end());
     Aabb all;
-    for (Id u : units) all.expand(builder.unit(u).box);
+    for (Id u : units)
+        all.expand(builder.unit(u).box);
     const glm::dvec3 e = all.extent();
     const double half = std::max({e.x, e.y, e.z, 1e-9}) * 0.5;
     Octree tree{builder, static_cast<std::size_t>(maxChildren), progress};

@@ -40,7 +40,8 @@ Id TreeBuilder::addFoldedNode(std::vector<Id> children) {
         throw Error(ErrorCode::InvalidArgument, "cluster tree: an inner node needs 2 children");
     }
     ClusterUnit u = units_[children[0]];
-    for (std::size_t i = 1; i < children.size(); ++i) u = model_.merge(u, units_[children[i]]);
+    for (std::size_t i = 1; i < children.size(); ++i)
+        u = model_.merge(u, units_[children[i]]);
     return addNode(std::move(children), u);
 }
 

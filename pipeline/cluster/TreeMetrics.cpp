@@ -38,7 +38,8 @@ std::vector<Id> postOrder(const ClusterTree& tree) {
         const Id id = stack.back();
         stack.pop_back();
         order.push_back(id);
-        for (Id c : tree.nodes[id].children) stack.push_back(c);
+        for (Id c : tree.nodes[id].children)
+            stack.push_back(c);
     }
     std::reverse(order.begin(), order.end());
     return order;
@@ -54,7 +55,8 @@ TreeMetrics computeTreeMetrics(const ClusterTree& tree) {
     std::vector<int> depthOf(tree.nodes.size(), 0);
     // Depths top-down: reverse post-order visits parents first.
     for (auto it = order.rbegin(); it != order.rend(); ++it) {
-        for (Id c : tree.nodes[*it].children) depthOf[c] = depthOf[*it] + 1;
+        for (Id c : tree.nodes[*it].children)
+            depthOf[c] = depthOf[*it] + 1;
     }
     const glm::dvec3 origin = tree.nodes[tree.root].box.center(); // keeps moments well scaled
     double leafDepthSum = 0.0, childSum = 0.0, fillSum = 0.0, spreadSum = 0.0;
@@ -70,7 +72,8 @@ TreeMetrics computeTreeMetrics(const ClusterTree& tree) {
             continue;
         }
         ++m.innerNodes;
-        for (Id c : n.children) moments[id].add(moments[c]);
+        for (Id c : n.children)
+            moments[id].add(moments[c]);
         childSum += static_cast<double>(n.children.size());
         m.minChildren = std::min(m.minChildren, n.children.size());
         m.maxChildren = std::max(m.maxChildren, n.children.size());

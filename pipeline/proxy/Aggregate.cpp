@@ -9,7 +9,8 @@ void appendInstance(const Scene& scene, Id instance, const glm::dvec3& origin, P
     const MeshInstance& inst = scene.instances[instance];
     const Mesh& mesh = scene.meshes[inst.mesh];
     const glm::dmat4& world = scene.nodes[inst.node].world;
-    const Material& material = scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0];
+    const Material& material =
+        scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0];
     const glm::vec4 base = material.effectiveColor();
     const auto first = static_cast<std::uint32_t>(out.positions.size());
 
@@ -21,7 +22,8 @@ void appendInstance(const Scene& scene, Id instance, const glm::dvec3& origin, P
         out.positions.push_back(glm::vec3(linear * glm::dvec3(p) + shift));
     }
     if (mesh.colors.size() == mesh.positions.size()) {
-        for (const glm::vec4& c : mesh.colors) out.colors.push_back(quantizeColor(base * c));
+        for (const glm::vec4& c : mesh.colors)
+            out.colors.push_back(quantizeColor(base * c));
     } else {
         out.colors.insert(out.colors.end(), mesh.positions.size(), quantizeColor(base));
     }
@@ -43,9 +45,11 @@ void appendProxy(const ProxyMesh& proxy, const glm::dvec3& origin, ProxyMesh& ou
     if (proxy.colors.size() == proxy.positions.size()) {
         out.colors.insert(out.colors.end(), proxy.colors.begin(), proxy.colors.end());
     } else {
-        out.colors.insert(out.colors.end(), proxy.positions.size(), glm::u8vec4(204, 204, 204, 255));
+        out.colors.insert(out.colors.end(), proxy.positions.size(),
+                          glm::u8vec4(204, 204, 204, 255));
     }
-    for (std::uint32_t i : proxy.indices) out.indices.push_back(first + i);
+    for (std::uint32_t i : proxy.indices)
+        out.indices.push_back(first + i);
 }
 
 } // namespace
@@ -53,8 +57,10 @@ void appendProxy(const ProxyMesh& proxy, const glm::dvec3& origin, ProxyMesh& ou
 std::size_t aggregateTriangleCount(const Scene& scene, std::span<const AggregatePart> parts) {
     std::size_t n = 0;
     for (const AggregatePart& part : parts) {
-        if (part.proxy) n += part.proxy->triangleCount();
-        else if (part.instance != kNoId) n += scene.meshes[scene.instances[part.instance].mesh].triangleCount();
+        if (part.proxy)
+            n += part.proxy->triangleCount();
+        else if (part.instance != kNoId)
+            n += scene.meshes[scene.instances[part.instance].mesh].triangleCount();
     }
     return n;
 }
@@ -78,8 +84,10 @@ ProxyMesh aggregateParts(const Scene& scene, std::span<const AggregatePart> part
     out.colors.reserve(vertices);
     out.indices.reserve(indices);
     for (const AggregatePart& part : parts) {
-        if (part.proxy) appendProxy(*part.proxy, origin, out);
-        else if (part.instance != kNoId) appendInstance(scene, part.instance, origin, out);
+        if (part.proxy)
+            appendProxy(*part.proxy, origin, out);
+        else if (part.instance != kNoId)
+            appendInstance(scene, part.instance, origin, out);
     }
     return out;
 }

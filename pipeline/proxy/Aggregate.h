@@ -20,7 +20,7 @@ namespace hlod {
 
 // One child's contribution: a scene instance (leaf) or an already baked proxy (inner child).
 struct AggregatePart {
-    Id instance = kNoId;             // set for leaf children
+    Id instance = kNoId;              // set for leaf children
     const ProxyMesh* proxy = nullptr; // set for inner children
 };
 

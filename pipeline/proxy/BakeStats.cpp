@@ -61,21 +61,25 @@ ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeRes
     if (original <= 0.0) return share;
     share.allProxies = static_cast<double>(bake.proxyTriangles) / original;
     if (tree.root != kNoId && tree.root < bake.nodes.size() && !tree.nodes[tree.root].isLeaf()) {
-        share.rootProxy = static_cast<double>(bake.nodes[tree.root].proxy.triangleCount()) / original;
+        share.rootProxy =
+            static_cast<double>(bake.nodes[tree.root].proxy.triangleCount()) / original;
     }
     return share;
 }
 
 std::string hlodVersionName(const ClusterTree& tree) {
     switch (tree.volume) {
-    case VolumeType::Sphere: return "HLOD, sphere";
+    case VolumeType::Sphere:
+        return "HLOD, sphere";
     case VolumeType::Aabb: {
         char k[32];
         std::snprintf(k, sizeof(k), "%g", tree.k);
         return std::string("HLOD, AABB k=") + k;
     }
-    case VolumeType::Octree: return "HLOD, octree";
-    case VolumeType::Original: return "HLOD, original hierarchy";
+    case VolumeType::Octree:
+        return "HLOD, octree";
+    case VolumeType::Original:
+        return "HLOD, original hierarchy";
     }
     return "HLOD";
 }

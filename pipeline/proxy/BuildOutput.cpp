@@ -20,24 +20,28 @@ nlohmann::json vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 std::string proxyFile(Id id) { return "proxies/node_" + std::to_string(id) + ".glb"; }
 
 nlohmann::json statsJson(const GeometryStats& s) {
-    return {{"version", s.version},   {"triangles", s.triangles}, {"vertices", s.vertices},
-            {"meshes", s.meshes},     {"bytes", s.bytes}};
+    return {{"version", s.version},
+            {"triangles", s.triangles},
+            {"vertices", s.vertices},
+            {"meshes", s.meshes},
+            {"bytes", s.bytes}};
 }
 
 nlohmann::json nodeJson(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
                         const BuildInfo& info, Id id) {
     const ClusterNode& n = tree.nodes[id];
     const NodeBake& b = bake.nodes[id];
-    nlohmann::json j = {{"id", id},
-                        {"parent", n.parent == kNoId ? nlohmann::json() : nlohmann::json(n.parent)},
-                        {"children", n.children},
-                        {"level", n.level},
-                        {"box", {{"min", vec3(n.box.min)}, {"max", vec3(n.box.max)}}},
-                        {"sphere", {{"center", vec3(n.sphere.center)}, {"radius", n.sphere.radius}}},
-                        {"diameter", b.diameter},
-                        {"geometric_error", b.errorBudget},
-                        {"screen_size", info.bake.screen.screenSize},
-                        {"switch_distance", b.switchDistance}};
+    nlohmann::json j = {
+        {"id", id},
+        {"parent", n.parent == kNoId ? nlohmann::json() : nlohmann::json(n.parent)},
+        {"children", n.children},
+        {"level", n.level},
+        {"box", {{"min", vec3(n.box.min)}, {"max", vec3(n.box.max)}}},
+        {"sphere", {{"center", vec3(n.sphere.center)}, {"radius", n.sphere.radius}}},
+        {"diameter", b.diameter},
+        {"geometric_error", b.errorBudget},
+        {"screen_size", info.bake.screen.screenSize},
+        {"switch_distance", b.switchDistance}};
     if (n.isLeaf()) {
         if (n.instance != kNoId) {
             const MeshInstance& inst = scene.instances[n.instance];
@@ -67,9 +71,11 @@ void checkReplaceable(const std::filesystem::path& dir) {
     if (std::filesystem::is_empty(dir, ec)) return;
     std::ifstream in(dir / "tree.json");
     const nlohmann::json previous = nlohmann::json::parse(in, nullptr, false);
-    if (previous.is_discarded() || !previous.is_object() || previous.value("format", "") != kFormat) {
-        throw Error(ErrorCode::InvalidArgument, dir,
-                    "output folder is not empty and holds no previous hlod build; refusing to replace it");
+    if (previous.is_discarded() || !previous.is_object() ||
+        previous.value("format", "") != kFormat) {
+        throw Error(
+            ErrorCode::InvalidArgument, dir,
+            "output folder is not empty and holds no previous hlod build; refusing to replace it");
     }
 }
 
@@ -116,15 +122,19 @@ nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const 
                          {"viewport_height", info.bake.screen.viewportHeight}};
     doc["root"] = tree.root == kNoId ? nlohmann::json() : nlohmann::json(tree.root);
     nlohmann::json nodes = nlohmann::json::array();
-    for (Id id = 0; id < tree.nodes.size(); ++id) nodes.push_back(nodeJson(scene, tree, bake, info, id));
+    for (Id id = 0; id < tree.nodes.size(); ++id)
+        nodes.push_back(nodeJson(scene, tree, bake, info, id));
     doc["nodes"] = std::move(nodes);
     nlohmann::json stats = nlohmann::json::array();
-    for (const GeometryStats& s : info.statistics) stats.push_back(statsJson(s));
+    for (const GeometryStats& s : info.statistics)
+        stats.push_back(statsJson(s));
     doc["statistics"] = std::move(stats);
     doc["proxy_share"] = {{"all_proxies", info.share.allProxies},
                           {"root_proxy", info.share.rootProxy}};
-    doc["bake"] = {{"inner_nodes", bake.innerNodes}, {"baked", bake.baked},
-                   {"reused", bake.reused},          {"input_triangles", bake.inputTriangles},
+    doc["bake"] = {{"inner_nodes", bake.innerNodes},
+                   {"baked", bake.baked},
+                   {"reused", bake.reused},
+                   {"input_triangles", bake.inputTriangles},
                    {"proxy_triangles", bake.proxyTriangles},
                    {"seconds", bake.seconds}};
     return doc;

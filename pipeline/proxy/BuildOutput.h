@@ -30,7 +30,7 @@ struct BuildInfo {
     BakeParams bake;
     std::vector<GeometryStats> statistics; // rows of the thesis-style table
     ProxyShare share;
-    nlohmann::json clusterParameters;      // as the caller names them (volume, k, ...)
+    nlohmann::json clusterParameters; // as the caller names them (volume, k, ...)
 };
 
 // The tree.json document (exposed for tests and the GUI).

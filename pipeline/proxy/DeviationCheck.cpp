@@ -25,10 +25,14 @@ float distanceSquared(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b
         const glm::vec3 cp = p - c;
         const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
         const float vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
-        if (d3 >= 0 && d4 <= d3) q = b;
-        else if (d6 >= 0 && d5 <= d6) q = c;
-        else if (vc <= 0 && d1 >= 0 && d3 <= 0) q = a + ab * (d1 / (d1 - d3));
-        else if (vb <= 0 && d2 >= 0 && d6 <= 0) q = a + ac * (d2 / (d2 - d6));
+        if (d3 >= 0 && d4 <= d3)
+            q = b;
+        else if (d6 >= 0 && d5 <= d6)
+            q = c;
+        else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+            q = a + ab * (d1 / (d1 - d3));
+        else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+            q = a + ac * (d2 / (d2 - d6));
         else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
             q = b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
         else {
@@ -52,7 +56,8 @@ public:
         const std::size_t cells = static_cast<std::size_t>(dims.x) * dims.y * dims.z;
         offsets_.assign(cells + 1, 0);
         forEachCell([&](std::uint32_t, std::size_t c) { ++offsets_[c + 1]; });
-        for (std::size_t i = 1; i < offsets_.size(); ++i) offsets_[i] += offsets_[i - 1];
+        for (std::size_t i = 1; i < offsets_.size(); ++i)
+            offsets_[i] += offsets_[i - 1];
         items_.resize(offsets_.back());
         std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
         forEachCell([&](std::uint32_t t, std::size_t c) { items_[fill[c]++] = t; });
@@ -94,7 +99,8 @@ private:
         const bool firstPass = !counted_;
         counted_ = true;
         for (std::uint32_t t = 0; t < idx_.size() / 3; ++t) {
-            const glm::vec3 &a = pos_[idx_[3 * t]], &b = pos_[idx_[3 * t + 1]], &c = pos_[idx_[3 * t + 2]];
+            const glm::vec3 &a = pos_[idx_[3 * t]], &b = pos_[idx_[3 * t + 1]],
+                            &c = pos_[idx_[3 * t + 2]];
             const glm::ivec3 c0 = clampCell((glm::min(a, glm::min(b, c)) - lo_) / cell_);
             const glm::ivec3 c1 = clampCell((glm::max(a, glm::max(b, c)) - lo_) / cell_);
             const glm::ivec3 span = c1 - c0 + 1;
@@ -152,8 +158,7 @@ GridFrame frameFor(std::span<const glm::vec3> positions, std::span<const std::ui
 
 } // namespace
 
-bool withinDistanceOf(std::span<const glm::vec3> meshPositions,
-                      std::span<const std::uint32_t> mesh,
+bool withinDistanceOf(std::span<const glm::vec3> meshPositions, std::span<const std::uint32_t> mesh,
                       std::span<const glm::vec3> referencePositions,
                       std::span<const std::uint32_t> reference, double limitMetres) {
     if (mesh.empty()) return true;
@@ -164,15 +169,15 @@ bool withinDistanceOf(std::span<const glm::vec3> meshPositions,
     for (std::size_t t = 0; t + 2 < mesh.size(); t += 3) {
         const glm::vec3 &a = meshPositions[mesh[t]], &b = meshPositions[mesh[t + 1]],
                         &c = meshPositions[mesh[t + 2]];
-        for (const glm::vec3& p : {a, (a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f}) {
+        for (const glm::vec3& p :
+             {a, (a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f}) {
             if (!grid.anyWithin(p, limit)) return false;
         }
     }
     return true;
 }
 
-bool withinDeviation(std::span<const glm::vec3> positions,
-                     std::span<const std::uint32_t> original,
+bool withinDeviation(std::span<const glm::vec3> positions, std::span<const std::uint32_t> original,
                      std::span<const std::uint32_t> simplified, double limitMetres) {
     if (original.empty()) return true;
     if (simplified.empty()) return false;
@@ -189,14 +194,16 @@ bool withinDeviation(std::span<const glm::vec3> positions,
     const glm::ivec3 dims = glm::ivec3(glm::floor((hi - lo) / cell)) + 2;
 
     std::vector<std::uint8_t> kept(positions.size(), 0);
-    for (std::uint32_t v : simplified) kept[v] = 1;
+    for (std::uint32_t v : simplified)
+        kept[v] = 1;
 
     // Simplified -> original: edge midpoints and centroids (corners are original vertices).
     const TriangleGrid originalGrid(positions, original, lo, cell, dims);
     for (std::size_t t = 0; t + 2 < simplified.size(); t += 3) {
         const glm::vec3 &a = positions[simplified[t]], &b = positions[simplified[t + 1]],
                         &c = positions[simplified[t + 2]];
-        for (const glm::vec3& p : {(a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f}) {
+        for (const glm::vec3& p :
+             {(a + b) * 0.5f, (b + c) * 0.5f, (c + a) * 0.5f, (a + b + c) / 3.0f}) {
             if (!originalGrid.anyWithin(p, limit)) return false;
         }
     }
@@ -208,7 +215,9 @@ bool withinDeviation(std::span<const glm::vec3> positions,
         kept[v] = 1; // checked once
     }
     for (std::size_t t = 0; t + 2 < original.size(); t += 3) {
-        const glm::vec3 p = (positions[original[t]] + positions[original[t + 1]] + positions[original[t + 2]]) / 3.0f;
+        const glm::vec3 p =
+            (positions[original[t]] + positions[original[t + 1]] + positions[original[t + 2]]) /
+            3.0f;
         if (!simplifiedGrid.anyWithin(p, limit)) return false;
     }
     return true;

@@ -20,15 +20,13 @@
 
 namespace hlod {
 
-bool withinDeviation(std::span<const glm::vec3> positions,
-                     std::span<const std::uint32_t> original,
+bool withinDeviation(std::span<const glm::vec3> positions, std::span<const std::uint32_t> original,
                      std::span<const std::uint32_t> simplified, double limit);
 
 // One direction only, meshes with their own vertices: every sample of `mesh` (corners, edge
 // midpoints, centroids) lies within `limit` of `reference`'s surface. Used for remeshed
 // shells, whose hidden input parts must not count as missing.
-bool withinDistanceOf(std::span<const glm::vec3> meshPositions,
-                      std::span<const std::uint32_t> mesh,
+bool withinDistanceOf(std::span<const glm::vec3> meshPositions, std::span<const std::uint32_t> mesh,
                       std::span<const glm::vec3> referencePositions,
                       std::span<const std::uint32_t> reference, double limit);
 

@@ -48,12 +48,13 @@ std::vector<Mesh> buildDlodChain(const Mesh& mesh, const DlodParams& params) {
     std::vector<std::uint32_t> current = mesh.indices;
     for (int level = 0; level < params.levels && !current.empty(); ++level) {
         const auto target = static_cast<std::size_t>(
-            std::floor(static_cast<double>(current.size() / 3) * params.keep)) * 3;
+                                std::floor(static_cast<double>(current.size() / 3) * params.keep)) *
+                            3;
         std::vector<std::uint32_t> next(current.size());
         // No error limit: the chain is defined by triangle counts, as in the thesis.
-        const std::size_t count = meshopt_simplify(
-            next.data(), current.data(), current.size(), &mesh.positions[0].x,
-            mesh.positions.size(), sizeof(glm::vec3), target, 1.0e3f, 0, nullptr);
+        const std::size_t count =
+            meshopt_simplify(next.data(), current.data(), current.size(), &mesh.positions[0].x,
+                             mesh.positions.size(), sizeof(glm::vec3), target, 1.0e3f, 0, nullptr);
         if (count == 0 || count >= current.size()) break;
         next.resize(count);
         current = std::move(next);

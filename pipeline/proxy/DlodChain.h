@@ -17,8 +17,8 @@
 namespace hlod {
 
 struct DlodParams {
-    int levels = 4;     // reductions after the original
-    double keep = 0.4;  // fraction of the previous level's triangles each reduction keeps
+    int levels = 4;    // reductions after the original
+    double keep = 0.4; // fraction of the previous level's triangles each reduction keeps
 };
 
 // The reduced meshes of one chain (original excluded), attributes carried over.
@@ -27,13 +27,12 @@ std::vector<Mesh> buildDlodChain(const Mesh& mesh, const DlodParams& params = {}
 struct DlodSummary {
     std::size_t triangles = 0; // instanced, original levels included
     std::size_t vertices = 0;
-    std::size_t meshes = 0;    // one per level per instance
-    std::size_t bytes = 0;     // geometry bytes as glTF buffers (BakeStats.h meshBytes)
+    std::size_t meshes = 0; // one per level per instance
+    std::size_t bytes = 0;  // geometry bytes as glTF buffers (BakeStats.h meshBytes)
     double seconds = 0.0;
 };
 
 // Throws Error(InvalidArgument) for levels outside [0, 16] or keep outside (0, 1).
-DlodSummary summarizeDlodChains(const Scene& scene, const DlodParams& params = {},
-                                int threads = 0);
+DlodSummary summarizeDlodChains(const Scene& scene, const DlodParams& params = {}, int threads = 0);
 
 } // namespace hlod

@@ -16,9 +16,9 @@
 namespace hlod {
 
 struct ScreenParams {
-    double screenSize = 300.0;     // S: projected diameter (px) at which a node switches
-    double pixelError = 1.0;       // t: allowed proxy deviation at the switch point (px)
-    double fovYDegrees = 60.0;     // vertical field of view of the reference camera
+    double screenSize = 300.0;      // S: projected diameter (px) at which a node switches
+    double pixelError = 1.0;        // t: allowed proxy deviation at the switch point (px)
+    double fovYDegrees = 60.0;      // vertical field of view of the reference camera
     double viewportHeight = 1080.0; // viewport height (px) of the reference camera
 };
 

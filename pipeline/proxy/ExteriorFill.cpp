@@ -170,8 +170,10 @@ std::array<std::uint64_t, 8> ExteriorFill::exteriorMask(const openvdb::Coord& vo
     std::array<std::uint64_t, 8> out{};
     const std::int64_t block = blockIndex(blockOf(voxel));
     const std::int32_t state = block < 0 ? kEmptyReached : state_[static_cast<std::size_t>(block)];
-    if (state == kEmptyReached) out.fill(kAll);
-    else if (state >= 0) out = masks_[static_cast<std::size_t>(state)].exterior;
+    if (state == kEmptyReached)
+        out.fill(kAll);
+    else if (state >= 0)
+        out = masks_[static_cast<std::size_t>(state)].exterior;
     return out;
 }
 

@@ -39,7 +39,8 @@ std::vector<Id> postOrder(const ClusterTree& tree) {
         }
         stack.push_back({id, true});
         const auto& children = tree.nodes[id].children;
-        for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back({*it, false});
+        for (auto it = children.rbegin(); it != children.rend(); ++it)
+            stack.push_back({*it, false});
     }
     return order;
 }
@@ -56,7 +57,8 @@ std::vector<Aabb> nodeBoxes(const Scene& scene, const ClusterTree& tree,
         } else if (node.isLeaf()) {
             if (node.instance != kNoId) boxes[id] = scene.instanceBounds(node.instance);
         } else {
-            for (Id c : node.children) boxes[id].expand(boxes[c]);
+            for (Id c : node.children)
+                boxes[id].expand(boxes[c]);
         }
     }
     return boxes;
@@ -80,7 +82,8 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
         h.addValue(params.decimate.weldFraction);
         h.addValue(params.decimate.simplifyFraction);
         break;
-    case ProxyMethod::Sloppy: break;
+    case ProxyMethod::Sloppy:
+        break;
     }
 }
 
@@ -142,7 +145,8 @@ std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree
         h.addValue(frames[id].errorBudget);
         h.addValue(frames[id].proxy.origin);
         h.addValue(static_cast<std::uint64_t>(node.children.size()));
-        for (Id c : node.children) h.addValue(keys[c]);
+        for (Id c : node.children)
+            h.addValue(keys[c]);
         keys[id] = h.digest();
     }
     return keys;
@@ -151,17 +155,20 @@ std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree
 ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& params,
                     const Progress& progress) {
     switch (params.method) {
-    case ProxyMethod::Decimate: return decimateProxy(std::move(input), errorBudget, params.decimate);
+    case ProxyMethod::Decimate:
+        return decimateProxy(std::move(input), errorBudget, params.decimate);
     case ProxyMethod::Remesh: {
         // Both meet the budget; the shell is kept only when it is not larger, so remeshing
         // never inflates a proxy (a closed shell of a few low-poly parts can be).
         ProxyMesh decimated = decimateProxy(input, errorBudget, params.decimate);
-        const auto small = static_cast<std::size_t>(std::max(0, params.remesh.decimateBelowTriangles));
+        const auto small =
+            static_cast<std::size_t>(std::max(0, params.remesh.decimateBelowTriangles));
         if (decimated.triangleCount() <= small) return decimated;
         ProxyMesh shell = remeshProxy(std::move(input), errorBudget, progress, params.remesh);
         return shell.triangleCount() <= decimated.triangleCount() ? shell : decimated;
     }
-    case ProxyMethod::Sloppy: return sloppyProxy(std::move(input), errorBudget);
+    case ProxyMethod::Sloppy:
+        return sloppyProxy(std::move(input), errorBudget);
     }
     return input;
 }
@@ -187,8 +194,10 @@ struct BakeRun {
         parts.reserve(node.children.size());
         for (Id c : node.children) {
             const ClusterNode& child = tree.nodes[c];
-            if (child.isLeaf()) parts.push_back(AggregatePart{child.instance, nullptr});
-            else parts.push_back(AggregatePart{kNoId, &result.nodes[c].proxy});
+            if (child.isLeaf())
+                parts.push_back(AggregatePart{child.instance, nullptr});
+            else
+                parts.push_back(AggregatePart{kNoId, &result.nodes[c].proxy});
         }
         nb.inputTriangles = aggregateTriangleCount(scene, parts);
         const glm::dvec3 origin = nb.proxy.origin;
@@ -197,8 +206,8 @@ struct BakeRun {
             nb.reused = true;
             ++reused;
         } else {
-            nb.proxy = makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params,
-                                 progress);
+            nb.proxy =
+                makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params, progress);
             nb.proxy.origin = origin;
             cache.store(nb.key, nb.proxy);
             ++baked;
@@ -247,13 +256,15 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
         const ClusterNode& node = tree.nodes[id];
         if (node.isLeaf()) continue;
         int inner = 0;
-        for (Id c : node.children) inner += tree.nodes[c].isLeaf() ? 0 : 1;
+        for (Id c : node.children)
+            inner += tree.nodes[c].isLeaf() ? 0 : 1;
         run.pending[id].store(inner);
         if (inner == 0) ready.push_back(id);
     }
     progress.emit(ProgressInfo{"bake", 0, result.innerNodes, ""});
     arena.execute([&] {
-        for (Id id : ready) run.group.run([&run, id] { run.bakeNode(id); });
+        for (Id id : ready)
+            run.group.run([&run, id] { run.bakeNode(id); });
         run.group.wait();
     });
 

@@ -44,13 +44,13 @@ struct BakeParams {
 };
 
 struct NodeBake {
-    double diameter = 0.0;       // metres (ErrorBudget.h nodeDiameter)
-    double errorBudget = 0.0;    // e = t * diameter / S, metres
-    double switchDistance = 0.0; // metres
-    std::uint64_t key = 0;       // cache key (leaves: key of their instance)
-    bool reused = false;         // inner nodes: taken from the cache
+    double diameter = 0.0;          // metres (ErrorBudget.h nodeDiameter)
+    double errorBudget = 0.0;       // e = t * diameter / S, metres
+    double switchDistance = 0.0;    // metres
+    std::uint64_t key = 0;          // cache key (leaves: key of their instance)
+    bool reused = false;            // inner nodes: taken from the cache
     std::size_t inputTriangles = 0; // inner nodes: aggregated children
-    ProxyMesh proxy;             // inner nodes only
+    ProxyMesh proxy;                // inner nodes only
 };
 
 struct BakeResult {

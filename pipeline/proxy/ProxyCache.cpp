@@ -103,8 +103,8 @@ std::optional<ProxyMesh> decodeProxy(std::uint64_t key, const std::vector<std::u
     std::uint32_t version = 0, flags = 0;
     std::uint64_t fileKey = 0, vertices = 0, indices = 0;
     ProxyMesh m;
-    if (!r.get(magic) || !r.get(version) || !r.get(flags) || !r.get(fileKey) ||
-        !r.get(vertices) || !r.get(indices) || !r.get(m.origin)) {
+    if (!r.get(magic) || !r.get(version) || !r.get(flags) || !r.get(fileKey) || !r.get(vertices) ||
+        !r.get(indices) || !r.get(m.origin)) {
         return std::nullopt;
     }
     if (version != kVersion || fileKey != key || indices % 3 != 0) return std::nullopt;

@@ -21,8 +21,10 @@ struct VertexFaces {
 VertexFaces buildVertexFaces(const ProxyMesh& m) {
     VertexFaces vf;
     vf.offsets.assign(m.positions.size() + 1, 0);
-    for (std::uint32_t v : m.indices) ++vf.offsets[v + 1];
-    for (std::size_t i = 1; i < vf.offsets.size(); ++i) vf.offsets[i] += vf.offsets[i - 1];
+    for (std::uint32_t v : m.indices)
+        ++vf.offsets[v + 1];
+    for (std::size_t i = 1; i < vf.offsets.size(); ++i)
+        vf.offsets[i] += vf.offsets[i - 1];
     vf.faces.resize(m.indices.size());
     std::vector<std::uint32_t> fill(vf.offsets.begin(), vf.offsets.end() - 1);
     for (std::size_t i = 0; i < m.indices.size(); ++i) {
@@ -87,8 +89,10 @@ void computeCreaseNormals(ProxyMesh& mesh, float creaseDegrees) {
         }
         if (target == kNone) {
             target = static_cast<std::uint32_t>(out.positions.size());
-            if (last == kNone) firstSplit[v] = target;
-            else nextSplit[last] = target;
+            if (last == kNone)
+                firstSplit[v] = target;
+            else
+                nextSplit[last] = target;
             nextSplit.push_back(kNone);
             out.positions.push_back(mesh.positions[v]);
             out.normals.push_back(n);

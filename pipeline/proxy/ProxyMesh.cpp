@@ -9,9 +9,12 @@ namespace hlod {
 
 const char* toString(ProxyMethod method) {
     switch (method) {
-    case ProxyMethod::Decimate: return "decimate";
-    case ProxyMethod::Remesh: return "remesh";
-    case ProxyMethod::Sloppy: return "sloppy";
+    case ProxyMethod::Decimate:
+        return "decimate";
+    case ProxyMethod::Remesh:
+        return "remesh";
+    case ProxyMethod::Sloppy:
+        return "sloppy";
     }
     return "decimate";
 }

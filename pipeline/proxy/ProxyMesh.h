@@ -17,9 +17,9 @@ namespace hlod {
 
 struct ProxyMesh {
     glm::dvec3 origin{0.0};
-    std::vector<glm::vec3> positions;  // relative to origin
-    std::vector<glm::vec3> normals;    // empty, or one per position
-    std::vector<glm::u8vec4> colors;   // one per position (linear RGBA, 255 = 1.0)
+    std::vector<glm::vec3> positions;   // relative to origin
+    std::vector<glm::vec3> normals;     // empty, or one per position
+    std::vector<glm::u8vec4> colors;    // one per position (linear RGBA, 255 = 1.0)
     std::vector<std::uint32_t> indices; // 3 per triangle, counter-clockwise = front
 
     std::size_t triangleCount() const { return indices.size() / 3; }

@@ -51,7 +51,7 @@ Voxelised voxelise(const ProxyMesh& m, double h, double d, const Progress& progr
     }
     const openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(h);
     openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> adapter(points,
-                                                                                    triangles);
+                                                                                       triangles);
     // Two voxels: exact distances up to d + 1.4 h around the shell, enough for the exterior
     // voxels next to it; wider bands make OpenVDB dilate and recompute (3x slower).
     const auto band = static_cast<float>(std::max(2.0, d / h + 1.0));
@@ -147,23 +147,22 @@ ProxyMesh extractSurface(const openvdb::FloatGrid& phi, const openvdb::Int32Grid
     }
     // volumeToMesh already winds polygons counter-clockwise seen from the positive side.
     out.indices.reserve(triangles.size() * 3 + quads.size() * 6);
-    for (const openvdb::Vec3I& t : triangles) out.indices.insert(out.indices.end(), {t[0], t[1], t[2]});
+    for (const openvdb::Vec3I& t : triangles)
+        out.indices.insert(out.indices.end(), {t[0], t[1], t[2]});
     for (const openvdb::Vec4I& q : quads) {
         out.indices.insert(out.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
     }
     return out;
 }
 
-// meshoptimizer's RMS error (DeviationCheck.h) at falling fractions of what is left of the
-// budget, until every sample of the simplified shell lies within the whole budget of the
-// input. Only that direction is checked: hidden input parts are meant to be missing, and the
-// simplifier removes the thin spikes pulling back can leave (their area, and so their RMS
-// error, is tiny), which a shell-to-result check would wrongly refuse.
-std::vector<std::uint32_t> simplifyShell(const ProxyMesh& shell, const ProxyMesh& input,
-                                         double remaining, double maxError) {
-    for (const double fraction : {0.6, 0.4, 0.25, 0.15, 0.05}) {
-        std::vector<std::uint32_t> out = simplifyToError(shell, remaining * fraction);
-        if (withinDistanceOf(shell.positions, out, input.positions, input.indices, maxError)) {
+// meshoptimizer's RMS error (DeviationCheck.h) at falling fractions of the budget, until every
+// sample of the simplified shell lies within the budget of the unsimplified shell. Only that
+// direction is checked: the simplifier rightly removes the thin spikes pulling back can leave
+// (their area, and so their RMS error, is tiny), which a two-way check would refuse.
+std::vector<std::uint32_t> simplifyShell(const ProxyMesh& shell, double maxError) {
+    for (const double fraction : {0.6, 0.4, 0.25, 0.15}) {
+        std::vector<std::uint32_t> out = simplifyToError(shell, maxError * fraction);
+        if (withinDistanceOf(shell.positions, out, shell.positions, shell.indices, maxError)) {
             return out;
         }
     }
@@ -206,11 +205,8 @@ ProxyMesh remeshProxy(ProxyMesh input, double maxError, const Progress& progress
     vox.closest.reset();
     progress.throwIfCancelled();
 
-    // What the kept offset and the sampling (a quarter voxel) leave of the budget goes to the
-    // simplifier.
-    const double remaining = std::max(maxError - keep - 0.25 * h, 0.1 * maxError);
     weldVertices(shell, 0.0f);
-    shell.indices = simplifyShell(shell, input, remaining, maxError);
+    shell.indices = simplifyShell(shell, maxError);
     compactMesh(shell);
     dropSmallParts(shell, static_cast<float>(maxError));
     finishProxy(shell);

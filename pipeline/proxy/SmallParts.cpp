@@ -22,7 +22,8 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t v) {
 // result does not depend on the order unions happen in.
 std::vector<std::uint32_t> componentRoots(const ProxyMesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.positions.size());
-    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    for (std::uint32_t v = 0; v < parent.size(); ++v)
+        parent[v] = v;
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         std::uint32_t a = findRoot(parent, mesh.indices[t]);
         for (int k = 1; k < 3; ++k) {
@@ -32,7 +33,8 @@ std::vector<std::uint32_t> componentRoots(const ProxyMesh& mesh) {
             parent[b] = a;
         }
     }
-    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = findRoot(parent, v);
+    for (std::uint32_t v = 0; v < parent.size(); ++v)
+        parent[v] = findRoot(parent, v);
     return parent;
 }
 

@@ -88,19 +88,22 @@ class KeyTable {
 public:
     explicit KeyTable(std::size_t expected) {
         std::size_t buckets = 16;
-        while (buckets < 2 * expected) buckets *= 2;
+        while (buckets < 2 * expected)
+            buckets *= 2;
         slots_.assign(buckets, kUnset);
     }
     // Head of the chain for `key` (kUnset when none).
     std::uint32_t head(const CellKey& key) const {
-        for (std::size_t s = hashKey(key) & (slots_.size() - 1);; s = (s + 1) & (slots_.size() - 1)) {
+        for (std::size_t s = hashKey(key) & (slots_.size() - 1);;
+             s = (s + 1) & (slots_.size() - 1)) {
             if (slots_[s] == kUnset) return kUnset;
             if (keys_[slots_[s]] == key) return heads_[slots_[s]];
         }
     }
     void add(const CellKey& key, std::uint32_t rep, std::vector<std::uint32_t>& next) {
         std::size_t s = hashKey(key) & (slots_.size() - 1);
-        while (slots_[s] != kUnset && !(keys_[slots_[s]] == key)) s = (s + 1) & (slots_.size() - 1);
+        while (slots_[s] != kUnset && !(keys_[slots_[s]] == key))
+            s = (s + 1) & (slots_.size() - 1);
         if (slots_[s] == kUnset) {
             slots_[s] = static_cast<std::uint32_t>(keys_.size());
             keys_.push_back(key);
@@ -137,13 +140,17 @@ void weldVertices(ProxyMesh& mesh, float tolerance) {
         } else {
             const glm::vec3& p = mesh.positions[v];
             const glm::vec3 lo = p - glm::vec3(tolerance), hi = p + glm::vec3(tolerance);
-            for (std::int64_t x = cellOf(lo.x, inverseCell); x <= cellOf(hi.x, inverseCell) && found == kUnset; ++x) {
-                for (std::int64_t y = cellOf(lo.y, inverseCell); y <= cellOf(hi.y, inverseCell) && found == kUnset; ++y) {
-                    for (std::int64_t z = cellOf(lo.z, inverseCell); z <= cellOf(hi.z, inverseCell) && found == kUnset; ++z) {
+            for (std::int64_t x = cellOf(lo.x, inverseCell);
+                 x <= cellOf(hi.x, inverseCell) && found == kUnset; ++x) {
+                for (std::int64_t y = cellOf(lo.y, inverseCell);
+                     y <= cellOf(hi.y, inverseCell) && found == kUnset; ++y) {
+                    for (std::int64_t z = cellOf(lo.z, inverseCell);
+                         z <= cellOf(hi.z, inverseCell) && found == kUnset; ++z) {
                         const CellKey probe{x, y, z, key.color};
                         for (std::uint32_t r = table.head(probe); r != kUnset; r = next[r]) {
                             const glm::vec3 delta = glm::abs(mesh.positions[representative[r]] - p);
-                            if (delta.x <= tolerance && delta.y <= tolerance && delta.z <= tolerance) {
+                            if (delta.x <= tolerance && delta.y <= tolerance &&
+                                delta.z <= tolerance) {
                                 found = r;
                                 break;
                             }
@@ -185,7 +192,8 @@ void compactMesh(ProxyMesh& mesh) {
     const bool hasNormals = mesh.normals.size() == mesh.positions.size();
     if (hasNormals) {
         normals.reserve(representative.size());
-        for (std::uint32_t v : representative) normals.push_back(mesh.normals[v]);
+        for (std::uint32_t v : representative)
+            normals.push_back(mesh.normals[v]);
     }
     rebuild(mesh, remap, representative);
     if (hasNormals) mesh.normals = std::move(normals);

@@ -45,7 +45,8 @@ double bruteForceRadius(const std::vector<glm::dvec3>& pts) {
 
 TEST(BoundingSphere, CubeCornersGiveCentreAndHalfDiagonal) {
     std::vector<glm::dvec3> pts;
-    for (int i = 0; i < 8; ++i) pts.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    for (int i = 0; i < 8; ++i)
+        pts.emplace_back(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
     const Sphere s = minimumBoundingSphere(pts);
     EXPECT_NEAR(glm::length(s.center), 0.0, 1e-12);
     EXPECT_NEAR(s.radius, std::sqrt(3.0), 1e-12); // half of the cube's diagonal 2 sqrt 3
@@ -87,7 +88,8 @@ TEST(BoundingSphere, CocircularPointsGiveTheCircle) {
 
 TEST(BoundingSphere, CollinearPointsGiveHalfTheSpan) {
     std::vector<glm::dvec3> pts;
-    for (int i = 0; i <= 10; ++i) pts.emplace_back(i, 2.0 * i, -i); // span length 10 sqrt 6
+    for (int i = 0; i <= 10; ++i)
+        pts.emplace_back(i, 2.0 * i, -i); // span length 10 sqrt 6
     const Sphere s = minimumBoundingSphere(pts);
     EXPECT_NEAR(s.radius, 5.0 * std::sqrt(6.0), 1e-9);
     EXPECT_NEAR(glm::length(s.center - glm::dvec3(5, 10, -5)), 0.0, 1e-9);
@@ -116,7 +118,8 @@ TEST(BoundingSphere, MatchesBruteForceOnRandomClouds) {
     std::normal_distribution<double> g(0.0, 1.0);
     for (int trial = 0; trial < 30; ++trial) {
         std::vector<glm::dvec3> pts;
-        for (int i = 0; i < 10; ++i) pts.emplace_back(g(rng), 0.3 * g(rng), 2.0 * g(rng));
+        for (int i = 0; i < 10; ++i)
+            pts.emplace_back(g(rng), 0.3 * g(rng), 2.0 * g(rng));
         const Sphere s = minimumBoundingSphere(pts);
         expectContains(s, pts);
         EXPECT_NEAR(s.radius, bruteForceRadius(pts), 1e-9) << "trial " << trial;
@@ -127,7 +130,8 @@ TEST(BoundingSphere, SameInputGivesSameBits) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-10.0, 10.0);
     std::vector<glm::dvec3> pts(5000);
-    for (auto& p : pts) p = {u(rng), u(rng), u(rng)};
+    for (auto& p : pts)
+        p = {u(rng), u(rng), u(rng)};
     const Sphere a = minimumBoundingSphere(pts);
     const Sphere b = minimumBoundingSphere(pts);
     EXPECT_EQ(a.center, b.center);

@@ -50,8 +50,7 @@ TEST(OverlapVolume, BoxesOverlapInTheirCommonCorner) {
     const Aabb b{{1, 1, 1}, {3, 3, 3}};
     EXPECT_DOUBLE_EQ(boxIntersectionVolume(a, b), 1.0);
     // [0,4]x[0,1]x[0,1] and [1,2]x[-5,5]x[0.5,3]: 1 x 1 x 0.5.
-    EXPECT_DOUBLE_EQ(boxIntersectionVolume({{0, 0, 0}, {4, 1, 1}}, {{1, -5, 0.5}, {2, 5, 3}}),
-                     0.5);
+    EXPECT_DOUBLE_EQ(boxIntersectionVolume({{0, 0, 0}, {4, 1, 1}}, {{1, -5, 0.5}, {2, 5, 3}}), 0.5);
 }
 
 TEST(OverlapVolume, BoxesSharingAFaceOrApartDoNotOverlap) {
@@ -61,8 +60,7 @@ TEST(OverlapVolume, BoxesSharingAFaceOrApartDoNotOverlap) {
 }
 
 TEST(OverlapVolume, ContainedBoxOverlapsWithItsWholeVolume) {
-    EXPECT_DOUBLE_EQ(boxIntersectionVolume({{0, 0, 0}, {10, 10, 10}}, {{1, 2, 3}, {2, 4, 6}}),
-                     6.0);
+    EXPECT_DOUBLE_EQ(boxIntersectionVolume({{0, 0, 0}, {10, 10, 10}}, {{1, 2, 3}, {2, 4, 6}}), 6.0);
 }
 
 TEST(OverlapVolume, SphereVolumeIsFourThirdsPiRCubed) {

@@ -85,12 +85,14 @@ TEST(ClusterProperty, FastEqualsNaiveForFractionalK) {
 TEST(ClusterProperty, FastEqualsNaiveForOtherRuleConstants) {
     // Budget samples smaller than the unit count (production uses 256, near the sizes the
     // naive reference can handle), short or long neighbour lists, graphs rebuilt at every level
-    // or inherited until the fallback rebuild (R = 1000).
+    // or inherited until the budget or the fallback forces a rebuild (R = 1000), with graph
+    // budgets from B to 8 B.
     const Scene scene = test::makeRandomScene({250, test::Layout::Clumped, 12, 0.05});
     for (const Model& model : kModels) {
         for (const LevelMergeOptions options :
-             {LevelMergeOptions{1, 8, 2}, LevelMergeOptions{7, 1, 1}, LevelMergeOptions{64, 3, 4},
-              LevelMergeOptions{1000, 40, 1}, LevelMergeOptions{256, 2, 1000}}) {
+             {LevelMergeOptions{1, 8, 2, 1.0}, LevelMergeOptions{7, 1, 1, 1.0},
+              LevelMergeOptions{64, 3, 4, 8.0}, LevelMergeOptions{1000, 40, 1, 2.0},
+              LevelMergeOptions{256, 2, 1000, 1.0}, LevelMergeOptions{256, 8, 1000, 4.0}}) {
             ClusterParams p;
             p.volume = model.volume;
             p.k = model.k;
@@ -106,7 +108,7 @@ TEST(ClusterProperty, FastEqualsNaiveForOtherRuleConstants) {
                 });
             EXPECT_EQ(test::treeDifference(fast, reference), "")
                 << "S " << options.budgetSample << " K " << options.neighbours << " R "
-                << options.rebuildRatio;
+                << options.rebuildRatio << " G " << options.graphBudgetFactor;
             EXPECT_EQ(validateClusterTree(fast, scene.instances.size()), "");
         }
     }

@@ -12,8 +12,8 @@ namespace {
 
 // The seven cubes of LevelMergerTest: a row of three and two far pairs.
 Scene sevenCubes() {
-    return test::cubesAt({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {100, 0, 0}, {102, 0, 0},
-                          {200, 0, 0}, {202, 0, 0}});
+    return test::cubesAt(
+        {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {100, 0, 0}, {102, 0, 0}, {200, 0, 0}, {202, 0, 0}});
 }
 
 Id lockedNode(const ClusterTree& t) {

@@ -65,7 +65,8 @@ TEST(CostModel, OverlappingBoxesSubtractTheOverlapOnce) {
     // [0,2]^3 and [1,3]x[0,2]^2 overlap in 1 x 2 x 2 = 4: F V = 8 + 8 - 4 = 12 = the hull's
     // volume 3 x 2 x 2, so F = 1; ratio 3 / 2, cost with k = 1: 12 * 1.5 = 18.
     const CostModel m(VolumeType::Aabb, 1.0);
-    const ClusterUnit ab = m.merge(boxLeaf(m, {0, 0, 0}, {2, 2, 2}), boxLeaf(m, {1, 0, 0}, {3, 2, 2}));
+    const ClusterUnit ab =
+        m.merge(boxLeaf(m, {0, 0, 0}, {2, 2, 2}), boxLeaf(m, {1, 0, 0}, {3, 2, 2}));
     EXPECT_NEAR(ab.fill(), 1.0, 1e-12);
     EXPECT_NEAR(ab.cost, 18.0, 1e-12);
 }
@@ -74,7 +75,8 @@ TEST(CostModel, FillOfThreeMembersChainsEquationThreeOne) {
     // Three unit cubes in a row: AB fills [0,2] (F = 1), then (AB)C fills [0,3] (F = 1):
     // cost with k = 0 is V = 3.
     const CostModel m(VolumeType::Aabb, 0.0);
-    const ClusterUnit ab = m.merge(boxLeaf(m, {0, 0, 0}, {1, 1, 1}), boxLeaf(m, {1, 0, 0}, {2, 1, 1}));
+    const ClusterUnit ab =
+        m.merge(boxLeaf(m, {0, 0, 0}, {1, 1, 1}), boxLeaf(m, {1, 0, 0}, {2, 1, 1}));
     const ClusterUnit abc = m.merge(ab, boxLeaf(m, {2, 0, 0}, {3, 1, 1}));
     EXPECT_NEAR(abc.fill(), 1.0, 1e-12);
     EXPECT_NEAR(abc.cost, 3.0, 1e-12);
@@ -110,8 +112,10 @@ TEST(CostModel, LowerBoundNeverExceedsARealCost) {
     // cost, for every model (spheres of every size, boxes far apart and overlapping).
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> pos(-20.0, 20.0), size(0.01, 5.0);
-    for (auto [vol, k] : {std::pair{VolumeType::Sphere, 0.0}, {VolumeType::Aabb, 0.0},
-                          {VolumeType::Aabb, 1.0}, {VolumeType::Aabb, 2.0},
+    for (auto [vol, k] : {std::pair{VolumeType::Sphere, 0.0},
+                          {VolumeType::Aabb, 0.0},
+                          {VolumeType::Aabb, 1.0},
+                          {VolumeType::Aabb, 2.0},
                           {VolumeType::Aabb, 0.5}}) {
         const CostModel m(vol, k);
         for (int i = 0; i < 2000; ++i) {

@@ -18,8 +18,8 @@ inline Scene cubesAt(const std::vector<glm::dvec3>& corners, double size = 1.0) 
     Scene s;
     s.addMesh(makeBoxMesh({0, 0, 0}, {1, 1, 1}, "cube"));
     for (const glm::dvec3& c : corners) {
-        const glm::dmat4 m = glm::translate(glm::dmat4(1.0), c) *
-                             glm::scale(glm::dmat4(1.0), glm::dvec3(size));
+        const glm::dmat4 m =
+            glm::translate(glm::dmat4(1.0), c) * glm::scale(glm::dmat4(1.0), glm::dvec3(size));
         s.addInstance(0, s.addNode("cube", 0, m));
     }
     return s;
@@ -32,7 +32,8 @@ inline std::vector<Id> leavesBelow(const ClusterTree& t, Id node) {
         const Id id = stack.back();
         stack.pop_back();
         if (t.nodes[id].isLeaf()) out.push_back(t.nodes[id].instance);
-        for (Id c : t.nodes[id].children) stack.push_back(c);
+        for (Id c : t.nodes[id].children)
+            stack.push_back(c);
     }
     std::sort(out.begin(), out.end());
     return out;

@@ -25,8 +25,8 @@ TEST(LevelMerger, ClusterAbsorbsAThirdMemberWithinTheLevelBudget) {
     // Cheapest partners: A, B, C cost 2 (a 2 x 1 x 1 full box); D..G cost 3^2 / 2 = 4.5.
     // Lower median of [2, 2, 2, 4.5, 4.5, 4.5, 4.5] = 4.5 = level 1 budget. Level 1 merges AB
     // (2), then AB + C (a full 3 x 1 x 1 box: 3), then DE and FG (4.5 each).
-    const Scene s = test::cubesAt({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {100, 0, 0}, {102, 0, 0},
-                                   {200, 0, 0}, {202, 0, 0}});
+    const Scene s = test::cubesAt(
+        {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {100, 0, 0}, {102, 0, 0}, {200, 0, 0}, {202, 0, 0}});
     const ClusterTree t = buildClusterTree(s, boxParams());
     ASSERT_EQ(validateClusterTree(t, 7), "");
     ASSERT_EQ(t.nodes.size(), 12u);

@@ -71,7 +71,8 @@ inline LevelResult runLevel(TreeBuilder& builder, const std::vector<Id>& units,
     const CostModel& model = builder.model();
     const std::size_t n = units.size();
     std::vector<Group> g(n);
-    for (std::size_t i = 0; i < n; ++i) g[i] = Group{builder.unit(units[i]), units[i], {i}};
+    for (std::size_t i = 0; i < n; ++i)
+        g[i] = Group{builder.unit(units[i]), units[i], {i}};
     std::vector<Key> cost(unitKeys);
     auto recomputeRow = [&](std::size_t i) {
         for (std::size_t j = 0; j < n; ++j) {
@@ -124,7 +125,8 @@ inline LevelResult runLevel(TreeBuilder& builder, const std::vector<Id>& units,
               [](const Group* a, const Group* b) { return a->key < b->key; });
     for (const Group* x : formed) {
         std::vector<Id> children;
-        for (std::size_t m : x->members) children.push_back(units[m]);
+        for (std::size_t m : x->members)
+            children.push_back(units[m]);
         next.push_back({builder.addNode(std::move(children), x->unit), x});
     }
     std::sort(next.begin(), next.end(),
@@ -159,8 +161,7 @@ inline std::vector<char> contract(const std::vector<char>& adj, std::size_t n,
 
 // Same contract as hlod::mergeLevelsWith (wrap it in a lambda to use it as a UnitMerger).
 inline Id naiveMergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
-                           const Progress& progress = {},
-                           const LevelMergeOptions& options = {}) {
+                           const Progress& progress = {}, const LevelMergeOptions& options = {}) {
     if (units.empty()) return kNoId;
     const CostModel& model = builder.model();
     const auto cap = static_cast<std::size_t>(maxChildren);
@@ -168,6 +169,7 @@ inline Id naiveMergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxC
     double budget = 0.0;
     std::vector<char> adj;
     std::size_t unitsAtRebuild = 0;
+    double graphBudget = 0.0;
     while (units.size() > 1) {
         progress.throwIfCancelled();
         const std::size_t m = units.size();
@@ -190,9 +192,11 @@ inline Id naiveMergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxC
         }
         std::sort(best.begin(), best.end());
         budget = std::max(budget, best[(s - 1) / 2]);
-        const bool rebuild = adj.empty() || m * options.rebuildRatio <= unitsAtRebuild;
+        const bool rebuild =
+            adj.empty() || budget > graphBudget || m * options.rebuildRatio <= unitsAtRebuild;
         if (rebuild) {
-            adj = naive::neighbourMatrix(keys, m, budget, options.neighbours);
+            graphBudget = budget * options.graphBudgetFactor;
+            adj = naive::neighbourMatrix(keys, m, graphBudget, options.neighbours);
             unitsAtRebuild = m;
         }
         const std::size_t nodesBefore = builder.size();
@@ -201,7 +205,8 @@ inline Id naiveMergeLevels(TreeBuilder& builder, std::vector<Id> units, int maxC
             // No merge with the inherited graph: rebuild it and rerun the level (the failed
             // run created no nodes).
             (void)nodesBefore;
-            adj = naive::neighbourMatrix(keys, m, budget, options.neighbours);
+            graphBudget = budget * options.graphBudgetFactor;
+            adj = naive::neighbourMatrix(keys, m, graphBudget, options.neighbours);
             unitsAtRebuild = m;
             r = naive::runLevel(builder, units, keys, adj, budget, cap);
         }

@@ -18,7 +18,8 @@ ClusterParams octree(int maxChildren) {
 std::vector<glm::dvec3> cornerCubes() {
     // Unit cubes in the eight corners of [0, 10]^3.
     std::vector<glm::dvec3> c;
-    for (int i = 0; i < 8; ++i) c.emplace_back(i & 1 ? 9 : 0, i & 2 ? 9 : 0, i & 4 ? 9 : 0);
+    for (int i = 0; i < 8; ++i)
+        c.emplace_back(i & 1 ? 9 : 0, i & 2 ? 9 : 0, i & 4 ? 9 : 0);
     return c;
 }
 
@@ -55,8 +56,12 @@ TEST(OctreeClusterer, LooseCellsTakePartsOnTheSplitPlane) {
     // Two clumps of three small cubes, one straddling the x = 5 split plane of the root cell
     // (a plain octree would keep it at the root). The looseness lets it move down with its
     // neighbours: the root has two children, each holding one clump.
-    const Scene s = test::cubesAt({{4.9, 0, 0}, {4.9, 0.5, 0}, {4.9, 1.0, 0},
-                                   {4.9, 9.0, 9.0}, {4.9, 9.0, 8.5}, {4.9, 9.0, 8.0}},
+    const Scene s = test::cubesAt({{4.9, 0, 0},
+                                   {4.9, 0.5, 0},
+                                   {4.9, 1.0, 0},
+                                   {4.9, 9.0, 9.0},
+                                   {4.9, 9.0, 8.5},
+                                   {4.9, 9.0, 8.0}},
                                   0.2);
     const ClusterTree t = buildClusterTree(s, octree(3));
     ASSERT_EQ(validateClusterTree(t, 6), "");

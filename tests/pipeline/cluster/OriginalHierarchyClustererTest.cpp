@@ -30,7 +30,8 @@ TEST(OriginalHierarchyClusterer, MeshesOfInnerNodesBecomeLeafSiblings) {
     const Id F = s.addNode("F", B);
     const Id G = s.addNode("G", D);
     const Id H = s.addNode("H", D);
-    for (Id n : {A, B, C, D, E, F, G, H}) s.addInstance(0, n); // instance i on the i-th node
+    for (Id n : {A, B, C, D, E, F, G, H})
+        s.addInstance(0, n); // instance i on the i-th node
     const ClusterTree t = buildClusterTree(s, original());
     ASSERT_EQ(validateClusterTree(t, 8), "");
     // Leaves 0..7, B' = 8 {1, 4, 5}, D' = 9 {3, 6, 7}, A' = 10 {0, 2, 8, 9}.

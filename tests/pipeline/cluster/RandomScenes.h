@@ -91,8 +91,8 @@ inline Scene makeRandomScene(const RandomSceneOptions& o) {
             if (clumps.empty()) {
                 pos = glm::dvec3(unit(rng), unit(rng), unit(rng)) * side;
             } else {
-                const Clump& c = clumps[static_cast<std::size_t>(unit(rng) * clumps.size()) %
-                                        clumps.size()];
+                const Clump& c =
+                    clumps[static_cast<std::size_t>(unit(rng) * clumps.size()) % clumps.size()];
                 pos = c.center + glm::dvec3(gauss(rng), gauss(rng), gauss(rng)) * c.sigma;
             }
             const double scale = 0.2 * std::pow(10.0, 2.0 * unit(rng));
@@ -102,8 +102,8 @@ inline Scene makeRandomScene(const RandomSceneOptions& o) {
                 glm::rotate(glm::dmat4(1.0), unit(rng) * 6.283185307179586, axis) *
                 glm::scale(glm::dmat4(1.0), glm::dvec3(scale));
             if (unit(rng) < 0.125) {
-                m = m * glm::scale(glm::dmat4(1.0),
-                                   glm::dvec3(1.0 + unit(rng), 1.0, 0.5 + unit(rng)));
+                m = m *
+                    glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 + unit(rng), 1.0, 0.5 + unit(rng)));
             }
             mesh = static_cast<Id>(rng() % s.meshes.size());
         }

@@ -72,7 +72,8 @@ TEST(GlbWriter, SameMeshGivesSameBytesAndFileIsReplacedAtomically) {
     writeGlbFile(file, q.view());
     writeGlbFile(file, q.view());
     std::size_t entries = 0;
-    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path()))
+        ++entries;
     EXPECT_EQ(entries, 1u); // no temporary left
     EXPECT_EQ(std::filesystem::file_size(file), encodeGlb(q.view()).size());
 }

@@ -3,8 +3,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "pipeline/proxy/BakeStats.h"
-#include "pipeline/scene/Primitives.h"
 #include "pipeline/proxy/ProxyTestUtil.h"
+#include "pipeline/scene/Primitives.h"
 
 using namespace hlod;
 

@@ -38,7 +38,8 @@ TEST(DlodChain, SummaryCountsEveryInstanceAndLevel) {
     s.addInstance(sphere, s.addNode("b", 0, glm::translate(glm::dmat4(1.0), {5, 0, 0})));
     const std::vector<Mesh> chain = buildDlodChain(s.meshes[sphere]);
     std::size_t perInstance = s.meshes[sphere].triangleCount();
-    for (const Mesh& level : chain) perInstance += level.triangleCount();
+    for (const Mesh& level : chain)
+        perInstance += level.triangleCount();
     const DlodSummary summary = summarizeDlodChains(s);
     EXPECT_EQ(summary.triangles, 2 * perInstance);
     EXPECT_EQ(summary.meshes, 2u * 5u); // original + 4 reductions, per instance
@@ -50,5 +51,6 @@ TEST(DlodChain, TinyClosedPartEndsItsChainWhenNothingCollapses) {
     // A box has no collapsible edge (every collapse would flip or remove a face plane), so the
     // chain stops rather than repeating the same mesh four times.
     const std::vector<Mesh> chain = buildDlodChain(makeBox({1, 1, 1}));
-    for (const Mesh& level : chain) EXPECT_LT(level.triangleCount(), 12u);
+    for (const Mesh& level : chain)
+        EXPECT_LT(level.triangleCount(), 12u);
 }

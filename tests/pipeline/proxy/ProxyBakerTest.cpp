@@ -10,8 +10,8 @@
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/ProxyBaker.h"
 #include "pipeline/proxy/ProxyCache.h"
-#include "pipeline/scene/Primitives.h"
 #include "pipeline/proxy/ProxyTestUtil.h"
+#include "pipeline/scene/Primitives.h"
 
 using namespace hlod;
 
@@ -58,7 +58,8 @@ struct Fixture {
 
 std::vector<std::vector<std::uint8_t>> proxyBytes(const BakeResult& r) {
     std::vector<std::vector<std::uint8_t>> out;
-    for (const NodeBake& n : r.nodes) out.push_back(encodeProxy(n.key, n.proxy));
+    for (const NodeBake& n : r.nodes)
+        out.push_back(encodeProxy(n.key, n.proxy));
     return out;
 }
 
@@ -79,7 +80,8 @@ TEST(ProxyBaker, EveryInnerNodeGetsAProxyFromItsChildren) {
     }
     // The root aggregates its children's proxies, not the original meshes again.
     std::size_t childProxies = 0;
-    for (Id g : f.groupNodes) childProxies += r.nodes[g].proxy.triangleCount();
+    for (Id g : f.groupNodes)
+        childProxies += r.nodes[g].proxy.triangleCount();
     EXPECT_EQ(r.nodes[f.tree.root].inputTriangles, childProxies);
     // Leaves get no proxy, but a budget and a switch distance like every node.
     const Id leaf = f.tree.nodes[f.groupNodes[0]].children[0];
@@ -191,7 +193,8 @@ TEST(ProxyBaker, CancelStopsBeforeTheNextNodeAndLeavesOnlyCompleteCacheFiles) {
     const std::vector<std::uint64_t> keys = computeBakeKeys(f.scene, f.tree, params);
     const ProxyCache cache(dir.path());
     std::size_t loadable = 0;
-    for (std::uint64_t key : keys) loadable += cache.load(key).has_value() ? 1 : 0;
+    for (std::uint64_t key : keys)
+        loadable += cache.load(key).has_value() ? 1 : 0;
     EXPECT_EQ(loadable, files);
     // A rerun picks up where the cancelled one stopped.
     const BakeResult resumed = bakeProxies(f.scene, f.tree, params);

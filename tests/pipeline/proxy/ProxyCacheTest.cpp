@@ -82,7 +82,7 @@ TEST(ContentHash, ValueDoesNotDependOnHowBytesAreSplit) {
 
 TEST(ContentHash, IsStableAcrossBuildsAndSensitiveToEveryByte) {
     // Pinned values: cache keys written by one build must be found by the next.
-        EXPECT_EQ(toHex(hashBytes("abc", 3)), "be028c78c710bc1e");
+    EXPECT_EQ(toHex(hashBytes("abc", 3)), "be028c78c710bc1e");
     EXPECT_NE(hashBytes("abc", 3), hashBytes("abd", 3));
     EXPECT_NE(hashBytes("abc", 3), hashBytes("abc", 3, 1)); // seeded
     const std::uint8_t zeros[9] = {};

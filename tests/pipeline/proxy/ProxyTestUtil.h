@@ -36,7 +36,8 @@ public:
         }
         tree_.nodes.push_back(n);
         const Id id = static_cast<Id>(tree_.nodes.size() - 1);
-        for (Id c : children) tree_.nodes[c].parent = id;
+        for (Id c : children)
+            tree_.nodes[c].parent = id;
         return id;
     }
     ClusterTree finish(Id root) {
@@ -119,13 +120,15 @@ inline std::size_t openEdgeCount(const ProxyMesh& m) {
     std::map<std::pair<K, K>, int> edges;
     for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
         for (int k = 0; k < 3; ++k) {
-            K a = key(m.positions[m.indices[t + k]]), b = key(m.positions[m.indices[t + (k + 1) % 3]]);
+            K a = key(m.positions[m.indices[t + k]]),
+              b = key(m.positions[m.indices[t + (k + 1) % 3]]);
             if (b < a) std::swap(a, b);
             ++edges[{a, b}];
         }
     }
     std::size_t open = 0;
-    for (const auto& [e, count] : edges) open += count != 2 ? 1 : 0;
+    for (const auto& [e, count] : edges)
+        open += count != 2 ? 1 : 0;
     return open;
 }
 

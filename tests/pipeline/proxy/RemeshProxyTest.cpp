@@ -5,9 +5,9 @@
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/Aggregate.h"
 #include "pipeline/proxy/ErrorBudget.h"
+#include "pipeline/proxy/ProxyTestUtil.h"
 #include "pipeline/proxy/RemeshProxy.h"
 #include "pipeline/scene/Primitives.h"
-#include "pipeline/proxy/ProxyTestUtil.h"
 
 using namespace hlod;
 
