@@ -1,4 +1,4 @@
-// Clustering benchmarks (issue #3; figures and commands in docs/benchmarks.md).
+// Clustering benchmarks (issue #3; figures and commands in docs/benchmarks.md, clustering).
 //
 // BM_Cluster: buildClusterTree (instance bounds + level merging) on generated scenes of 1k to
 // 1M instances, uniform and clumped layouts, sphere and AABB (k = 1), on ONE thread (TBB

@@ -1,5 +1,6 @@
 #include "Args.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -77,6 +78,52 @@ int Args::integer(const std::string& name, int fallback, int lo, int hi) const {
     if (out < lo || out > hi) {
         throw Error(ErrorCode::InvalidArgument, name + " must be within [" + std::to_string(lo) +
                                                     ", " + std::to_string(hi) + "], got " + *v);
+    }
+    return out;
+}
+
+namespace {
+
+bool ofKinds(const ParamDecl& d, const std::vector<NodeKind>& kinds) {
+    return !d.cliFlag.empty() && std::find(kinds.begin(), kinds.end(), d.node) != kinds.end();
+}
+
+} // namespace
+
+std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds) {
+    std::set<std::string> out;
+    for (const ParamDecl& d : parameterDeclarations()) {
+        if (!ofKinds(d, kinds) || d.type == ParamType::Bool) continue;
+        out.insert(d.cliFlag);
+        if (!d.cliAlias.empty()) out.insert(d.cliAlias);
+    }
+    return out;
+}
+
+std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds) {
+    std::set<std::string> out;
+    for (const ParamDecl& d : parameterDeclarations()) {
+        if (ofKinds(d, kinds) && d.type == ParamType::Bool) out.insert(d.cliFlag);
+    }
+    return out;
+}
+
+std::vector<std::pair<const ParamDecl*, ParamValue>>
+paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds) {
+    std::vector<std::pair<const ParamDecl*, ParamValue>> out;
+    for (const ParamDecl& d : parameterDeclarations()) {
+        if (!ofKinds(d, kinds)) continue;
+        if (d.type == ParamType::Bool) {
+            if (args.has(d.cliFlag)) out.push_back({&d, !d.cliNegated});
+            continue;
+        }
+        for (const std::string& flag : {d.cliFlag, d.cliAlias}) {
+            if (flag.empty()) continue;
+            if (auto v = args.value(flag)) {
+                out.push_back({&d, parseParamText(d, *v, flag)});
+                break;
+            }
+        }
     }
     return out;
 }

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/graph/Parameters.h"
+
 namespace hlod::cli {
 
 class Args {
@@ -29,5 +31,17 @@ private:
     std::map<std::string, std::string> values_;
     std::set<std::string> switches_;
 };
+
+// CLI flags derived from the parameter declarations (pipeline/graph/Parameters.h): the flags
+// (and aliases) of the parameters of `kinds` that take a value, and the switches (Bool
+// parameters: `--no-cache` sets `cache` to false).
+std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds);
+std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds);
+
+// The parameters of `kinds` given on the command line, parsed and validated against their
+// declarations; throws hlod::Error(InvalidArgument) naming the flag ("--k must be within
+// [0, 16], got 20").
+std::vector<std::pair<const ParamDecl*, ParamValue>>
+paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds);
 
 } // namespace hlod::cli

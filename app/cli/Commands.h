@@ -13,6 +13,7 @@ using CommandArgs = std::vector<std::string>;
 int runInfo(const CommandArgs& args);
 int runCluster(const CommandArgs& args);
 int runBuild(const CommandArgs& args);
+int runBench(const CommandArgs& args); // cmd_bench.cpp: thesis evaluation (needs VTK, X)
 
 struct CommandEntry {
     const char* name;

@@ -6,10 +6,10 @@
 namespace hlod::cli {
 
 ImportOptions importOptionsFromArgs(const Args& args) {
-    ImportOptions o;
-    o.cadRelativeDeflection = args.number("--deflection", o.cadRelativeDeflection, 1e-6, 0.5);
-    o.cadBrepUnitMetres = args.number("--brep-unit", o.cadBrepUnitMetres, 1e-9, 1e3);
-    return o;
+    ParamValues values = defaultValues(NodeKind::Import);
+    for (const auto& [decl, value] : paramsFromArgs(args, {NodeKind::Import}))
+        values[decl->key] = value;
+    return importOptionsFrom(values);
 }
 
 LoadedScene loadSceneArgs(const std::vector<std::string>& positionals,

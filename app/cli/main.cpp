@@ -20,10 +20,14 @@ const CommandEntry kCommands[] = {
      "hlod cluster SCENE [--volume sphere|aabb|octree|original] [--k K] [--max-children N] "
      "[--json]"},
     {"build", hlod::cli::runBuild,
-     "hlod build SCENE -o DIR [--volume sphere|aabb|octree|original] [--k K] "
+     "hlod build SCENE|PROJECT.hlodproj -o DIR [--volume sphere|aabb|octree|original] [--k K] "
      "[--max-children N] [--proxy decimate|remesh|sloppy] [--screen-size PX] [--pixel-error PX] "
      "[--fov DEG] [--viewport-height PX] [--threads N] [--cache DIR] [--no-cache] [--no-dlod] "
      "[--geo LAT,LON,H] [--deflection R] [--brep-unit M] [--json]"},
+    {"bench", hlod::cli::runBench,
+     "hlod bench SCENE --out DIR [--frames N] [--size WxH] [--configs LIST] [--screen-size PX] "
+     "[--path FILE.json] [--threads N] [--shading geometry|colour] [--no-cache] "
+     "[--deflection R] [--brep-unit M]"},
 };
 
 void printUsage(std::FILE* out) {

@@ -99,35 +99,22 @@ ClusterUnit CostModel::merge(const ClusterUnit& lo, const ClusterUnit& hi) const
 }
 
 double CostModel::mergeCost(const ClusterUnit& lo, const ClusterUnit& hi) const {
+    return mergeCostWithin(lo, hi, std::numeric_limits<double>::infinity());
+}
+
+double CostModel::mergeCostWithin(const ClusterUnit& lo, const ClusterUnit& hi,
+                                  double limit) const {
     // The unused volume's bound is not needed by the cost; pass the operand's own as filler.
     if (volume_ == VolumeType::Sphere) {
-        return evaluate(lo, hi, enclosingSphere(lo.sphere, hi.sphere), lo.box).cost;
+        const Sphere s = enclosingSphere(lo.sphere, hi.sphere);
+        const double r3 = s.radius * s.radius * s.radius; // costOf's numerator, same bits
+        if (r3 > limit) return r3;
+        return evaluate(lo, hi, s, lo.box).cost;
     }
-    return evaluate(lo, hi, lo.sphere, hull(lo.box, hi.box)).cost;
-}
-
-Region CostModel::regionOf(const ClusterUnit& u) const {
-    Region r;
-    if (volume_ == VolumeType::Aabb) {
-        r.box = u.box;
-    } else {
-        const glm::dvec3 radius(u.sphere.radius);
-        r.box = Aabb{u.sphere.center - radius, u.sphere.center + radius};
-    }
-    r.maxFv = u.fv;
-    r.minRadius = u.sphere.radius;
-    r.minVolume = u.volume;
-    r.minExtent = u.box.max - u.box.min;
-    return r;
-}
-
-int CostModel::sizeClass(const ClusterUnit& u) const {
-    const double size = volume_ == VolumeType::Sphere ? u.sphere.radius : std::cbrt(u.volume);
-    return size > 0.0 ? std::ilogb(size) : std::numeric_limits<int>::min();
-}
-
-double CostModel::lowerBound(const ClusterUnit& x, const Region& g) const {
-    return BoundQuery(*this, x)(g);
+    const Aabb box = hull(lo.box, hi.box);
+    const double v = boxVolume(box);
+    if (v > limit) return v;
+    return evaluate(lo, hi, lo.sphere, box).cost;
 }
 
 } // namespace hlod

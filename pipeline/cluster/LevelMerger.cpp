@@ -24,7 +24,7 @@ struct Candidate {
     Id lo = kNoId;
     Id hi = kNoId;
     std::uint32_t group = kNone;   // whose candidate this is
-    std::uint32_t partner = kNone; // the other group (or unit, in the neighbour lists)
+    std::uint32_t partner = kNone; // the other group
 };
 
 bool keyLess(const Candidate& a, const Candidate& b) {
@@ -33,6 +33,13 @@ bool keyLess(const Candidate& a, const Candidate& b) {
 
 struct LaterFirst {
     bool operator()(const Candidate& a, const Candidate& b) const { return keyLess(b, a); }
+};
+
+// An entry of a unit's neighbour list: the cost and the other unit; the pair's key follows from
+// the two units' ids.
+struct Near {
+    double cost;
+    std::uint32_t unit;
 };
 
 // Undirected neighbour graph over a level's units (positions in the id-sorted unit list), in
@@ -62,7 +69,7 @@ public:
         next_.assign(n, kNone);
         groups_.resize(n);
         std::vector<Region> regions(n);
-        std::vector<int> sizeClass(n);
+        std::vector<int> classes(n);
         for (std::uint32_t i = 0; i < n; ++i) {
             Group& g = groups_[i];
             g.unit = builder.unit(units[i]);
@@ -70,10 +77,10 @@ public:
             g.head = g.tail = i;
             g.size = 1;
             groupOf_[i] = i;
-            regions[i] = model_.regionOf(g.unit);
-            sizeClass[i] = model_.sizeClass(g.unit);
+            regions[i] = regionOf(model_, g.unit);
+            classes[i] = sizeClass(model_, g.unit);
         }
-        bvh_.build(regions, sizeClass);
+        bvh_.build(regions, classes);
         seen_.assign(n, 0);
     }
 
@@ -93,7 +100,7 @@ public:
     // spatial self-join, made symmetric into the level's neighbour graph.
     void buildGraph(double budget) {
         const std::size_t n = units_.size();
-        lists_.assign(n * k_, Candidate{});
+        lists_.assign(n * k_, Near{kInf, kNone});
         listSize_.assign(n, 0);
         auto exceeds = [&](const Region& a, const Region& b) {
             return pairBoundExceeds(model_, a, b, budget);
@@ -103,10 +110,10 @@ public:
             const bool iLow = units_[i] < units_[j];
             const Group& lo = groups_[iLow ? i : j];
             const Group& hi = groups_[iLow ? j : i];
-            const double cost = model_.mergeCost(lo.unit, hi.unit);
+            const double cost = model_.mergeCostWithin(lo.unit, hi.unit, budget);
             if (cost > budget) return;
-            offer(i, Candidate{cost, lo.key, hi.key, i, j});
-            offer(j, Candidate{cost, lo.key, hi.key, j, i});
+            offer(i, Near{cost, j});
+            offer(j, Near{cost, i});
         };
         bvh_.join(exceeds, visit);
         // Symmetric adjacency in CSR form: u ~ v when either lists the other.
@@ -115,7 +122,7 @@ public:
         for (std::uint32_t u = 0; u < n; ++u) {
             for (std::size_t k = 0; k < listSize_[u]; ++k) {
                 ++g.start[u + 1];
-                ++g.start[lists_[u * k_ + k].partner + 1];
+                ++g.start[lists_[u * k_ + k].unit + 1];
             }
         }
         for (std::size_t u = 0; u < n; ++u)
@@ -124,7 +131,7 @@ public:
         std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
         for (std::uint32_t u = 0; u < n; ++u) {
             for (std::size_t k = 0; k < listSize_[u]; ++k) {
-                const std::uint32_t v = lists_[u * k_ + k].partner;
+                const std::uint32_t v = lists_[u * k_ + k].unit;
                 g.adj[fill[u]++] = v;
                 g.adj[fill[v]++] = u;
             }
@@ -138,11 +145,15 @@ public:
 
     // Rule step 4: cheapest adjacent pair first until none is within budget and cap.
     std::size_t run(double budget, const Progress& progress) {
-        std::priority_queue<Candidate, std::vector<Candidate>, LaterFirst> heap;
+        std::vector<Candidate> initial;
+        initial.reserve(units_.size());
         for (std::uint32_t g = 0; g < units_.size(); ++g) {
             const Candidate c = cheapestNeighbour(g, budget);
-            if (c.partner != kNone) heap.push(c);
+            if (c.partner != kNone) initial.push_back(c);
         }
+        // Heapified at once (linear); pops follow the total key order whatever the layout.
+        std::priority_queue<Candidate, std::vector<Candidate>, LaterFirst> heap(LaterFirst{},
+                                                                                std::move(initial));
         std::size_t merges = 0;
         while (!heap.empty()) {
             const Candidate top = heap.top();
@@ -214,16 +225,25 @@ public:
     }
 
 private:
+    // Whether (a.cost, pair ids of (i, a.unit)) < (b.cost, pair ids of (i, b.unit)).
+    bool nearLess(std::uint32_t i, const Near& a, const Near& b) const {
+        if (a.cost != b.cost) return a.cost < b.cost;
+        const Id u = units_[i], x = units_[a.unit], y = units_[b.unit];
+        const Id loA = std::min(u, x), hiA = std::max(u, x);
+        const Id loB = std::min(u, y), hiB = std::max(u, y);
+        return loA < loB || (loA == loB && hiA < hiB);
+    }
+
     // Keeps c in unit i's list if it is among its K cheapest.
-    void offer(std::uint32_t i, const Candidate& c) {
-        Candidate* list = &lists_[i * k_];
+    void offer(std::uint32_t i, const Near& c) {
+        Near* list = &lists_[i * k_];
         std::uint8_t& size = listSize_[i];
         if (size == k_) {
-            if (!keyLess(c, list[k_ - 1])) return;
+            if (!nearLess(i, c, list[k_ - 1])) return;
             --size;
         }
         std::size_t at = size;
-        while (at > 0 && keyLess(c, list[at - 1])) {
+        while (at > 0 && nearLess(i, c, list[at - 1])) {
             list[at] = list[at - 1];
             --at;
         }
@@ -240,9 +260,9 @@ private:
         auto visit = [&](std::uint32_t v) {
             if (v == u) return;
             const Group& H = groups_[v];
-            if (bound(model_.regionOf(H.unit)) > best) return;
-            const double cost =
-                G.key < H.key ? model_.mergeCost(G.unit, H.unit) : model_.mergeCost(H.unit, G.unit);
+            if (bound(regionOf(model_, H.unit)) > best) return;
+            const double cost = G.key < H.key ? model_.mergeCostWithin(G.unit, H.unit, best)
+                                              : model_.mergeCostWithin(H.unit, G.unit, best);
             best = std::min(best, cost);
         };
         bvh_.search(bound, visit, best);
@@ -257,7 +277,7 @@ private:
         best.cost = budget;
         best.group = g;
         const std::uint32_t stamp = ++stamp_;
-        for (std::uint32_t m = G.head; m != kNone; m = kNone) {
+        for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
             for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
                 const std::uint32_t h = groupOf_[graph_.adj[e]];
                 if (h == g || seen_[h] == stamp) continue;
@@ -266,7 +286,10 @@ private:
                 if (G.size + H.size > cap_) continue;
                 const bool gLow = G.key < H.key;
                 Candidate c;
-                c.cost = gLow ? model_.mergeCost(G.unit, H.unit) : model_.mergeCost(H.unit, G.unit);
+                // Above best.cost (or the budget) the pair cannot win: stop at the cheap bound.
+                const double limit = best.cost;
+                c.cost = gLow ? model_.mergeCostWithin(G.unit, H.unit, limit)
+                              : model_.mergeCostWithin(H.unit, G.unit, limit);
                 c.lo = gLow ? G.key : H.key;
                 c.hi = gLow ? H.key : G.key;
                 if (c.cost > budget || (best.partner != kNone && !keyLess(c, best))) continue;
@@ -309,7 +332,7 @@ private:
     std::vector<std::uint32_t> next_;
     std::vector<Group> groups_; // 0..n-1: the units; then one per merge
     MergeBvh bvh_;
-    std::vector<Candidate> lists_; // K per unit while the graph is built
+    std::vector<Near> lists_; // K per unit while the graph is built
     std::vector<std::uint8_t> listSize_;
     Graph graph_; // neighbour graph over the units
     std::vector<std::uint32_t> seen_;

@@ -45,16 +45,30 @@
 //    its unit to the next level unchanged (no single-child nodes). The next level runs on the
 //    new nodes and the carried units.
 //
+// Choices the thesis leaves open, where they are decided:
+// - Budget growth: rule 2 (lower median of a fixed sample of best partners, never shrinking).
+// - Tie-breaking: the pair key (cost, lower id, higher id) above; new nodes take ids in
+//   ascending key order (rule 5), so equal costs always resolve the same way.
+// - Children cap: rule 4; a pair qualifies only while the merged group has at most
+//   maxChildren members, so no node built here has more (the root over excluded leaves in
+//   ClusterDriver.h is the one exception), and a group at the cap stops absorbing.
+// - Flat boxes with a zero extent: padded to a minimum extent before clustering (CostModel.h,
+//   ClusterDriver.h), so every volume and proportion ratio is finite.
+//
 // Complexity (fast implementation): per level, a BVH forest over the units (MergeBvh.h) gives
-// the sampled best() by branch and bound (CostModel BoundQuery); at rebuilds the neighbour
+// the sampled best() by branch and bound (CostBounds.h BoundQuery); at rebuilds the neighbour
 // lists come from one dual-tree self-join pruned with pairBoundExceeds. Merging then only
-// touches the graph: a
-// priority queue holds each group's cheapest neighbour pair and is invalidated lazily (an entry
-// whose partner has since merged is recomputed when it reaches the top). A popped entry whose
-// two groups are alive is the global minimum: every live qualifying pair is covered by an
-// entry of one of its groups with a key no larger than its own. Near n log n for spatially
-// coherent scenes, memory linear in n (K edges per unit). The sampled searches run in parallel
-// (TBB), each writing its own slot, so the tree does not depend on the thread count.
+// touches the graph: a priority queue (heapified at once from every unit's cheapest neighbour)
+// holds each group's cheapest neighbour pair and is invalidated lazily (an entry whose partner
+// has since merged is recomputed when it reaches the top). A popped entry whose two groups are
+// alive is the global minimum: every live qualifying pair is covered by an entry of one of its
+// groups with a key no larger than its own. Every pair cost that only has to be compared with
+// a limit (the budget, the best found so far) goes through CostModel::mergeCostWithin, which
+// stops at the cheap r^3 or V bound before the exact overlap volume. None of this changes
+// which pairs are found or their order, so the tree is the reference's (the property tests
+// compare them). Near n log n for spatially coherent scenes, memory linear in n (K edges per
+// unit). The sampled searches run in parallel (TBB), each writing its own slot, so the tree
+// does not depend on the thread count.
 #pragma once
 
 #include <vector>

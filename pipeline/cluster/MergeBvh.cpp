@@ -10,23 +10,6 @@ namespace {
 
 constexpr std::uint32_t kLeafSize = 2;
 
-void include(Region& into, const Region& r) {
-    into.box.expand(r.box);
-    into.maxFv = std::max(into.maxFv, r.maxFv);
-    into.minRadius = std::min(into.minRadius, r.minRadius);
-    into.minVolume = std::min(into.minVolume, r.minVolume);
-    into.minExtent = glm::min(into.minExtent, r.minExtent);
-}
-
-Region emptyRegion() {
-    Region r;
-    constexpr double big = std::numeric_limits<double>::max();
-    r.minRadius = big;
-    r.minVolume = big;
-    r.minExtent = glm::dvec3(big);
-    return r;
-}
-
 } // namespace
 
 void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass) {
@@ -34,7 +17,6 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     nodes_.clear();
     roots_.clear();
     order_.resize(n);
-    leafOf_.assign(n, 0);
     if (n == 0) return;
     nodes_.reserve(2 * (n / kLeafSize + 1) + 64);
     std::vector<glm::dvec3> centers(n);
@@ -49,7 +31,7 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
         std::uint32_t end = begin + 1;
         while (end < n && sizeClass[order_[end]] == sizeClass[order_[begin]])
             ++end;
-        roots_.push_back(buildRange(begin, end, items, centers, 0xffffffffu));
+        roots_.push_back(buildRange(begin, end, items, centers));
         begin = end;
     }
     ordered_.resize(n);
@@ -59,24 +41,22 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
 
 std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                                    const std::vector<Region>& items,
-                                   const std::vector<glm::dvec3>& centers, std::uint32_t parent) {
+                                   const std::vector<glm::dvec3>& centers) {
     const auto id = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back(Node{});
-    nodes_[id].parent = parent;
-    Region region = emptyRegion();
-    Aabb centerBox;
-    for (std::uint32_t i = begin; i < end; ++i) {
-        include(region, items[order_[i]]);
-        centerBox.expand(centers[order_[i]]);
-    }
-    nodes_[id].region = region;
     if (end - begin <= kLeafSize) {
+        Region region = emptyRegion();
+        for (std::uint32_t i = begin; i < end; ++i) {
+            includeRegion(region, items[order_[i]]);
+        }
+        nodes_[id].region = region;
         nodes_[id].first = begin;
         nodes_[id].count = end - begin;
-        for (std::uint32_t i = begin; i < end; ++i)
-            leafOf_[order_[i]] = id;
         return id;
     }
+    Aabb centerBox;
+    for (std::uint32_t i = begin; i < end; ++i)
+        centerBox.expand(centers[order_[i]]);
     const glm::dvec3 e = centerBox.extent();
     const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
     const std::uint32_t mid = begin + (end - begin) / 2;
@@ -87,24 +67,15 @@ std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                          const double cb = centers[b][axis];
                          return ca < cb || (ca == cb && a < b);
                      });
-    const std::uint32_t left = buildRange(begin, mid, items, centers, id);
-    const std::uint32_t right = buildRange(mid, end, items, centers, id);
+    const std::uint32_t left = buildRange(begin, mid, items, centers);
+    const std::uint32_t right = buildRange(mid, end, items, centers);
+    // The region bottom-up from the children (one merge per node, not one per item and depth).
+    Region region = nodes_[left].region;
+    includeRegion(region, nodes_[right].region);
+    nodes_[id].region = region;
     nodes_[id].first = left;
     nodes_[id].second = right;
     return id;
-}
-
-void MergeBvh::grow(std::uint32_t item, const Aabb& box, double fv) {
-    std::uint32_t n = leafOf_[item];
-    while (n != 0xffffffffu) {
-        Region& r = nodes_[n].region;
-        const bool holdsBox = glm::all(glm::lessThanEqual(r.box.min, box.min)) &&
-                              glm::all(glm::greaterThanEqual(r.box.max, box.max));
-        if (holdsBox && r.maxFv >= fv) return; // ancestors hold what this node holds
-        r.box.expand(box);
-        r.maxFv = std::max(r.maxFv, fv);
-        n = nodes_[n].parent;
-    }
 }
 
 } // namespace hlod

@@ -2,17 +2,14 @@
 // "cheapest partner" queries (LevelMerger.cpp).
 //
 // Based on the classic median-split BVH (e.g. Ericson, "Real-Time Collision Detection",
-// 6.2): top-down, split at the median centroid of the longest axis, leaves of up to four items.
+// 6.2): top-down, split at the median centroid of the longest axis, leaves of up to two items.
 // One hierarchy per size class (the caller's key, e.g. the binary exponent of the radius):
 // real scenes mix bolts and floor plates, and a node holding both can bound neither the cost
 // of joining a big part (at least its volume) nor that of a small one (low fill), so mixed
 // nodes would be visited from everywhere. Within a class the bounds stay tight.
-// Each node keeps a Region: a box and the aggregates CostModel::lowerBound needs (largest F*V,
-// smallest radius, volume and extents below it). While a level runs, items join groups whose
-// volumes are larger than the items': `grow` enlarges the box and the largest F*V on the
-// item's path to the root so that every node still bounds the groups of its items. The
-// minima stay valid because a group is never smaller than any of its members. Bounds only
-// loosen (stale groups keep them loose, never wrong), so every pruning bound stays valid.
+// Each node keeps a Region (CostBounds.h): a box and the aggregates the cost bounds need
+// (largest F*V, smallest radius, volume, extents and cross-sections below it), computed
+// bottom-up from the children.
 // The shape never changes a query's answer: the search visits every node whose bound does
 // not exceed the best cost found, so ties are resolved by the caller's key order alone.
 #pragma once
@@ -23,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "pipeline/cluster/CostModel.h"
+#include "pipeline/cluster/CostBounds.h"
 #include "pipeline/scene/Aabb.h"
 
 namespace hlod {
@@ -35,14 +32,10 @@ public:
         std::uint32_t first = 0;  // leaf: first index into order_; inner: left child
         std::uint32_t second = 0; // inner: right child
         std::uint32_t count = 0;  // leaf: item count; inner: 0
-        std::uint32_t parent = 0xffffffffu;
     };
 
     // Builds one hierarchy per distinct `sizeClass` over items 0..n-1.
     void build(const std::vector<Region>& items, const std::vector<int>& sizeClass);
-
-    // Makes every node above `item` hold `box` and `fv` too.
-    void grow(std::uint32_t item, const Aabb& box, double fv);
 
     // Best-first descent: `bound(region)` is a lower bound of any answer below a node; nodes
     // whose bound exceeds `threshold` are skipped; `visit(item)` sees every other item and may
@@ -68,13 +61,12 @@ private:
 
     std::uint32_t buildRange(std::uint32_t begin, std::uint32_t end,
                              const std::vector<Region>& items,
-                             const std::vector<glm::dvec3>& centers, std::uint32_t parent);
+                             const std::vector<glm::dvec3>& centers);
 
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> roots_;
-    std::vector<std::uint32_t> order_;  // items, leaf ranges contiguous
-    std::vector<Region> ordered_;       // the items' regions in order_ (contiguous leaves)
-    std::vector<std::uint32_t> leafOf_; // item -> leaf node
+    std::vector<std::uint32_t> order_; // items, leaf ranges contiguous
+    std::vector<Region> ordered_;      // the items' regions in order_ (contiguous leaves)
 };
 
 template <class Bound, class Visit>
@@ -99,8 +91,8 @@ void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) con
         double lb;
     };
     std::array<Entry, 96> stack;
-    for (std::size_t i = 0; i < roots_.size(); ++i) {
-        const auto [rootBound, root] = roots[i];
+    for (std::size_t r = 0; r < roots_.size(); ++r) {
+        const auto [rootBound, root] = roots[r];
         if (rootBound > threshold) break;
         std::size_t top = 0;
         stack[top++] = Entry{root, rootBound};
@@ -109,8 +101,9 @@ void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) con
             if (e.lb > threshold) continue;
             const Node& n = nodes_[e.node];
             if (n.count > 0) {
-                for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
+                for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
                     visit(order_[i]);
+                }
                 continue;
             }
             const double lbA = bound(nodes_[n.first].region);

@@ -100,18 +100,21 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
         fs::create_directories(tmp / "tiles");
         std::vector<TileStats> stats(tree.nodes.size());
         std::vector<bool> hasContent(tree.nodes.size(), false);
+        TextureCache textures(scene, tmp / "tiles");
         for (Id i = 0; i < tree.nodes.size(); ++i) {
             progress.throwIfCancelled();
             const fs::path file = tmp / "tiles" / (std::to_string(i) + ".glb");
             stats[i] =
                 tree.nodes[i].isLeaf()
-                    ? writeLeafContent(file, scene, tree.nodes[i].instance)
+                    ? writeLeafContent(file, scene, tree.nodes[i].instance, textures)
                     : writeProxyContent(file, bake.nodes[i].proxy, "proxy " + std::to_string(i));
             hasContent[i] = stats[i].triangles > 0;
             summary.bytes += stats[i].bytes;
             summary.files += hasContent[i] ? 1 : 0;
             progress.emit({"export", i + 1, tree.nodes.size(), ""});
         }
+        summary.bytes += textures.bytesWritten();
+        summary.files += textures.filesWritten();
         const nlohmann::json tileset = buildTileset(tree, bake, hasContent, options.geo);
         writeText(tmp / "tileset.json", tileset.dump(1));
         const ScreenParams& sp = bakeParams.screen;

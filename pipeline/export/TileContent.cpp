@@ -3,7 +3,12 @@
 // centre, carried by the glTF node translation) so that every tile shares the package frame.
 #include "pipeline/export/TileContent.h"
 
+#include <fstream>
+
 #include <glm/gtc/matrix_inverse.hpp>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/io/TextureImage.h"
 
 #include "pipeline/io/GlbWriter.h"
 
@@ -19,7 +24,36 @@ TileStats stats(const std::filesystem::path& file, std::size_t tris, std::size_t
 
 } // namespace
 
-TileStats writeLeafContent(const std::filesystem::path& file, const Scene& scene, Id instance) {
+const std::string& TextureCache::uriFor(Id material) {
+    if (auto it = byMaterial_.find(material); it != byMaterial_.end()) return it->second;
+    std::string& uri = byMaterial_[material];
+    const Material& m = scene_.materials[material];
+    if (!m.hasTexture || m.baseColorTexture.empty()) return uri;
+    if (auto it = byFile_.find(m.baseColorTexture); it != byFile_.end()) {
+        uri = it->second;
+        return uri;
+    }
+    std::string& shared = byFile_[m.baseColorTexture];
+    const std::optional<EncodedImage> image = loadTextureForGltf(m.baseColorTexture);
+    if (!image) return uri; // mean colour fallback, see the header
+    const std::string name = "textures/" + std::to_string(byFile_.size() - 1) +
+                             (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
+    const std::filesystem::path file = tilesDir_ / name;
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(image->bytes.data()),
+              static_cast<std::streamsize>(image->bytes.size()));
+    out.flush();
+    if (!out) throw Error(ErrorCode::Io, file, "cannot write texture");
+    bytes_ += image->bytes.size();
+    ++files_;
+    shared = name;
+    uri = name;
+    return uri;
+}
+
+TileStats writeLeafContent(const std::filesystem::path& file, const Scene& scene, Id instance,
+                           TextureCache& textures) {
     const MeshInstance& inst = scene.instances[instance];
     const Mesh& mesh = scene.meshes[inst.mesh];
     if (mesh.indices.empty()) return {};
@@ -56,8 +90,15 @@ TileStats writeLeafContent(const std::filesystem::path& file, const Scene& scene
     glb.normals = normals;
     glb.colors = colors;
     glb.indices = indices;
-    // Textures are represented by their mean colour (the package keeps geometry and colours).
-    glb.baseColor = mat.effectiveColor();
+    const std::string noTexture;
+    const std::string& uri = mesh.uvs.empty() ? noTexture : textures.uriFor(mesh.material);
+    if (!uri.empty()) {
+        glb.uvs = mesh.uvs;
+        glb.imageUri = uri;
+        glb.baseColor = mat.baseColor;
+    } else {
+        glb.baseColor = mat.effectiveColor();
+    }
     writeGlbFile(file, glb);
     return stats(file, mesh.triangleCount(), mesh.vertexCount());
 }

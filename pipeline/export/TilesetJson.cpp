@@ -9,13 +9,51 @@ namespace hlod {
 
 namespace {
 
+// A flat node (a single plane) still needs a box of non-zero thickness for runtimes'
+// oriented-box math: 1 mm at least.
+constexpr double kMinHalfExtent = 5e-4;
+
 // Our content is Y up; tiles are Z up: (x, y, z) -> (x, -z, y).
 nlohmann::json boxVolume(const Aabb& b) {
     const glm::dvec3 c = b.center();
-    // A flat node (a single plane) still needs a box of non-zero thickness for runtimes'
-    // oriented-box math: 1 mm at least.
-    const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(5e-4));
+    const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(kMinHalfExtent));
     return nlohmann::json::array({c.x, -c.z, c.y, h.x, 0.0, 0.0, 0.0, h.z, 0.0, 0.0, 0.0, h.y});
+}
+
+// Nodes in an order where every parent comes before its children.
+std::vector<Id> preOrder(const ClusterTree& tree) {
+    std::vector<Id> order{tree.root};
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        for (Id c : tree.nodes[order[i]].children)
+            order.push_back(c);
+    }
+    return order;
+}
+
+// Tile boxes that nest by construction (3D Tiles 1.1, 5.5: a tile's volume encloses its
+// children's and its content): the node's box padded to the minimum thickness, grown by its
+// proxy's vertices (a proxy may stray up to its error budget outside the originals) and by
+// its children's tile boxes, bottom-up.
+std::vector<Aabb> tileBoxes(const ClusterTree& tree, const BakeResult& bake) {
+    std::vector<Aabb> boxes(tree.nodes.size());
+    const std::vector<Id> order = preOrder(tree);
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+        const ClusterNode& node = tree.nodes[*it];
+        Aabb b = node.box;
+        const glm::dvec3 c = b.center();
+        const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(kMinHalfExtent));
+        b.expand(c - h);
+        b.expand(c + h);
+        if (*it < bake.nodes.size()) {
+            const ProxyMesh& proxy = bake.nodes[*it].proxy;
+            for (const glm::vec3& p : proxy.positions)
+                b.expand(proxy.origin + glm::dvec3(p));
+        }
+        for (Id child : node.children)
+            b.expand(boxes[child]);
+        boxes[*it] = b;
+    }
+    return boxes;
 }
 
 // The proxy error made monotone: a parent's error is at least its children's (3D Tiles
@@ -42,16 +80,16 @@ std::vector<double> monotoneErrors(const ClusterTree& tree, const BakeResult& ba
 }
 
 nlohmann::json tile(const ClusterTree& tree, Id n, const std::vector<double>& err,
-                    const std::vector<bool>& hasContent) {
+                    const std::vector<Aabb>& boxes, const std::vector<bool>& hasContent) {
     const ClusterNode& node = tree.nodes[n];
     nlohmann::json t;
-    t["boundingVolume"] = {{"box", boxVolume(node.box)}};
+    t["boundingVolume"] = {{"box", boxVolume(boxes[n])}};
     t["geometricError"] = err[n];
     if (hasContent[n]) t["content"] = {{"uri", "tiles/" + std::to_string(n) + ".glb"}};
     if (!node.isLeaf()) {
         nlohmann::json children = nlohmann::json::array();
         for (Id c : node.children)
-            children.push_back(tile(tree, c, err, hasContent));
+            children.push_back(tile(tree, c, err, boxes, hasContent));
         t["children"] = std::move(children);
     }
     return t;
@@ -63,7 +101,8 @@ nlohmann::json buildTileset(const ClusterTree& tree, const BakeResult& bake,
                             const std::vector<bool>& hasContent,
                             const std::optional<GeoLocation>& geo) {
     const std::vector<double> err = monotoneErrors(tree, bake);
-    nlohmann::json root = tile(tree, tree.root, err, hasContent);
+    const std::vector<Aabb> boxes = tileBoxes(tree, bake);
+    nlohmann::json root = tile(tree, tree.root, err, boxes, hasContent);
     root["refine"] = "REPLACE"; // inherited by every descendant
     if (geo) {
         const glm::dmat4 m = enuToEcef(*geo);
@@ -76,7 +115,7 @@ nlohmann::json buildTileset(const ClusterTree& tree, const BakeResult& bake,
     }
     // Error when nothing is drawn: the whole model's size, so a runtime shows the root as soon
     // as the tileset is in view.
-    const double top = std::max(tree.nodes[tree.root].box.diagonal(), err[tree.root] * 2.0);
+    const double top = std::max(boxes[tree.root].diagonal(), err[tree.root] * 2.0);
     return {
         {"asset", {{"version", "1.1"}, {"generator", std::string("HLOD Studio ") + HLOD_VERSION}}},
         {"geometricError", std::max(top, 1e-3)},

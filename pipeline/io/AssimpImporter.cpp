@@ -146,7 +146,7 @@ Mesh convertMesh(const aiMesh* am) {
     if (am->mTextureCoords[0]) {
         mesh.uvs.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
-            mesh.uvs[i] = {am->mTextureCoords[0][i].x, am->mTextureCoords[0][i].y};
+            mesh.uvs[i] = {am->mTextureCoords[0][i].x, 1.0f - am->mTextureCoords[0][i].y};
         }
     }
     if (am->mColors[0]) {

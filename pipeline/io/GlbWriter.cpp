@@ -76,6 +76,43 @@ int addAccessor(nlohmann::json& gltf, Layout& layout, const void* data, std::siz
     return view; // one accessor per view, same index
 }
 
+// The mesh's one material; an embedded texture adds a bufferView, an image, a sampler and a
+// texture (glTF 2.0 sections 3.8-3.9).
+nlohmann::json material(nlohmann::json& gltf, Layout& layout, const GlbMesh& m) {
+    const glm::vec4& c = m.baseColor;
+    nlohmann::json pbr = {{"baseColorFactor", {c.r, c.g, c.b, c.a}},
+                          {"metallicFactor", 0.0},
+                          {"roughnessFactor", 1.0}};
+    const bool embedded = !m.image.empty();
+    if (!m.uvs.empty() && (embedded || !m.imageUri.empty())) {
+        if (embedded) {
+            Stream s;
+            s.data = m.image.data();
+            s.bytes = m.image.size();
+            s.offset = layout.binBytes;
+            layout.binBytes = pad4(layout.binBytes + s.bytes);
+            layout.streams.push_back(s);
+            const auto view = gltf["bufferViews"].size();
+            gltf["bufferViews"].push_back(
+                {{"buffer", 0}, {"byteOffset", s.offset}, {"byteLength", s.bytes}});
+            gltf["images"] =
+                nlohmann::json::array({{{"bufferView", view}, {"mimeType", m.imageMimeType}}});
+        } else {
+            gltf["images"] = nlohmann::json::array({{{"uri", m.imageUri}}});
+        }
+        constexpr int kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497;
+        gltf["samplers"] = nlohmann::json::array({{{"magFilter", kLinear},
+                                                   {"minFilter", kLinearMipmapLinear},
+                                                   {"wrapS", kRepeat},
+                                                   {"wrapT", kRepeat}}});
+        gltf["textures"] = nlohmann::json::array({{{"sampler", 0}, {"source", 0}}});
+        pbr["baseColorTexture"] = {{"index", 0}};
+    }
+    nlohmann::json mat = {{"name", m.name}, {"pbrMetallicRoughness", pbr}};
+    if (c.a < 1.0f) mat["alphaMode"] = "BLEND";
+    return mat;
+}
+
 Layout buildLayout(const GlbMesh& m) {
     check(m);
     Layout layout;
@@ -118,12 +155,7 @@ Layout buildLayout(const GlbMesh& m) {
             gltf, layout, m.indices.data(), m.indices.size(), shortIndices ? 2 : 4,
             shortIndices ? kUnsignedShort : kUnsignedInt, "SCALAR", kElementArrayBuffer);
         layout.streams.back().shortIndices = shortIndices;
-        const glm::vec4& c = m.baseColor;
-        gltf["materials"] = nlohmann::json::array({{{"name", m.name},
-                                                    {"pbrMetallicRoughness",
-                                                     {{"baseColorFactor", {c.r, c.g, c.b, c.a}},
-                                                      {"metallicFactor", 0.0},
-                                                      {"roughnessFactor", 1.0}}}}});
+        gltf["materials"] = nlohmann::json::array({material(gltf, layout, m)});
         gltf["meshes"] = nlohmann::json::array({{{"name", m.name},
                                                  {"primitives",
                                                   {{{"attributes", attributes},

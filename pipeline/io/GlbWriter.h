@@ -1,6 +1,7 @@
 // Minimal glTF 2.0 binary (GLB) writer for one triangle mesh: positions, optional normals,
 // texture coordinates and vertex colours (COLOR_0 as normalised unsigned bytes, linear), one
-// PBR material (base colour factor, metallic 0, roughness 1), one node carrying the mesh's
+// PBR material (base colour factor and optional embedded base colour texture, metallic 0,
+// roughness 1; alpha below 1 makes it BLEND), one node carrying the mesh's
 // translation in double precision (so world-space proxies far from the origin stay exact).
 // Follows the Khronos glTF 2.0 specification, section 4.4 (GLB container) and 5 (JSON
 // schema): little-endian chunks padded to 4 bytes, POSITION min/max present, index type the
@@ -32,6 +33,13 @@ struct GlbMesh {
     std::span<const glm::u8vec4> colors; // empty or one per position (linear RGBA)
     std::span<const std::uint32_t> indices;
     glm::vec4 baseColor{1.0f};
+    // Optional base colour texture (PNG or JPEG bytes, see TextureImage.h), embedded in the BIN
+    // chunk and sampled with TEXCOORD_0 (repeat wrap, linear filtering). Ignored without uvs.
+    std::span<const std::uint8_t> image;
+    std::string imageMimeType;
+    // Or a texture file shared by several GLBs: a relative URI (no "..", no scheme) resolved
+    // against the GLB's folder. Used when `image` is empty; also ignored without uvs.
+    std::string imageUri;
 };
 
 std::vector<std::uint8_t> encodeGlb(const GlbMesh& mesh);

@@ -10,7 +10,10 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
+#include <string_view>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -78,10 +81,35 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
 }
 
 // Images are not kept: only their mean colour (for proxies) and their URI (for export).
+// Mean colours of the images decoded so far in this process, by content. A package's leaf
+// tiles all reference the same few shared texture files: each is decoded once, not once per
+// tile. Bounded; the key is the bytes' size and hash, the bytes are compared on a hit.
+std::optional<glm::vec4> cachedMeanColor(const unsigned char* bytes, std::size_t size) {
+    struct Entry {
+        std::string bytes;
+        std::optional<glm::vec4> mean;
+    };
+    static std::mutex mutex;
+    static std::map<std::pair<std::size_t, std::size_t>, Entry> cache;
+    const std::string_view view(reinterpret_cast<const char*>(bytes), size);
+    const std::pair<std::size_t, std::size_t> key{size, std::hash<std::string_view>{}(view)};
+    {
+        std::lock_guard lock(mutex);
+        if (auto it = cache.find(key); it != cache.end() && it->second.bytes == view) {
+            return it->second.mean;
+        }
+    }
+    std::optional<glm::vec4> mean = meanColorOfImage(bytes, size);
+    std::lock_guard lock(mutex);
+    if (cache.size() >= 64) cache.clear();
+    cache[key] = Entry{std::string(view), mean};
+    return mean;
+}
+
 bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
     auto* ctx = static_cast<LoadContext*>(user);
-    if (auto mean = meanColorOfImage(bytes, static_cast<std::size_t>(size))) {
+    if (auto mean = cachedMeanColor(bytes, static_cast<std::size_t>(size))) {
         ctx->imageMeans[index] = *mean;
     }
     ctx->imageUris[index] = image->uri;

@@ -3,6 +3,8 @@
 // assume a real file.
 #include "pipeline/io/Import.h"
 
+#include "pipeline/export/Package.h"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -141,6 +143,13 @@ bool isInsideFolder(const fs::path& candidate, const fs::path& folder) {
 Scene importScene(const std::vector<fs::path>& inputs, const ImportOptions& options,
                   const Progress& progress) {
     if (inputs.empty()) throw Error(ErrorCode::InvalidArgument, "no scene file given");
+    // An HLOD package (hlod build -o DIR) opens as the scene of its leaf tiles: the originals.
+    if (inputs.size() == 1 && isPackageFolder(inputs[0])) {
+        progress.emit({"import", 0, 1, inputs[0].filename().string()});
+        Scene s = readPackageScene(readPackage(inputs[0]));
+        progress.emit({"import", 1, 1, inputs[0].filename().string()});
+        return s;
+    }
     const std::vector<fs::path> files = expandInputs(inputs);
     if (files.size() == 1) {
         progress.emit({"import", 0, 1, files[0].filename().string()});

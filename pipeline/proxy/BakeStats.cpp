@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace hlod {
 
@@ -64,6 +65,28 @@ ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeRes
         share.rootProxy =
             static_cast<double>(bake.nodes[tree.root].proxy.triangleCount()) / original;
     }
+    // Original triangles under each node, children before parents (post-order from the root).
+    std::vector<double> subtree(tree.nodes.size(), 0.0);
+    std::vector<Id> order;
+    if (tree.root != kNoId) order.push_back(tree.root);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        for (Id c : tree.nodes[order[i]].children)
+            order.push_back(c);
+    }
+    double replaced = 0.0, proxies = 0.0;
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+        const ClusterNode& n = tree.nodes[*it];
+        if (n.isLeaf()) {
+            const MeshInstance& inst = scene.instances[n.instance];
+            subtree[*it] = static_cast<double>(scene.meshes[inst.mesh].triangleCount());
+            continue;
+        }
+        for (Id c : n.children)
+            subtree[*it] += subtree[c];
+        replaced += subtree[*it];
+        proxies += static_cast<double>(bake.nodes[*it].proxy.triangleCount());
+    }
+    if (replaced > 0.0) share.replaced = proxies / replaced;
     return share;
 }
 

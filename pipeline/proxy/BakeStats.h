@@ -8,9 +8,11 @@
 // - space is geometry bytes as the GLB writer stores them (float positions and normals, float
 //   uvs when present, 8-bit colours when present, 16- or 32-bit indices), without JSON or
 //   textures, so it measures geometry, not file-format overhead.
-// Proxy share: the two ways to say "how big are the proxies": all proxies together relative to
-// the original triangle count (the thesis' measure: HLOD minus Original over Original, which it
-// reports as 21-60%), and the root proxy alone relative to the original.
+// Proxy share, three ways to say "how big are the proxies": all proxies together relative to
+// the original triangle count (the thesis' measure: HLOD minus Original over Original, 21-90%
+// in its tables 6.2-6.6), the root proxy alone relative to the original, and what a proxy
+// costs relative to the originals it replaces when drawn (sum over inner nodes of proxy
+// triangles over the sum of their subtrees' original triangles).
 #pragma once
 
 #include <cstddef>
@@ -34,6 +36,7 @@ struct GeometryStats {
 struct ProxyShare {
     double allProxies = 0.0; // sum of proxy triangles / original triangles
     double rootProxy = 0.0;  // root proxy triangles / original triangles
+    double replaced = 0.0;   // sum proxy triangles / sum of the subtrees' original triangles
 };
 
 std::size_t meshBytes(std::size_t vertices, std::size_t indices, bool uvs, bool colors);

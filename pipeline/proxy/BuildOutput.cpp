@@ -47,6 +47,7 @@ nlohmann::json nodeJson(const Scene& scene, const ClusterTree& tree, const BakeR
             const MeshInstance& inst = scene.instances[n.instance];
             j["instance"] = n.instance;
             j["mesh"] = scene.meshes[inst.mesh].name;
+            j["triangles"] = scene.meshes[inst.mesh].triangleCount();
             j["name"] = scene.nodes[inst.node].name;
         }
         return j;
@@ -130,7 +131,8 @@ nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const 
         stats.push_back(statsJson(s));
     doc["statistics"] = std::move(stats);
     doc["proxy_share"] = {{"all_proxies", info.share.allProxies},
-                          {"root_proxy", info.share.rootProxy}};
+                          {"root_proxy", info.share.rootProxy},
+                          {"replaced", info.share.replaced}};
     doc["bake"] = {{"inner_nodes", bake.innerNodes},
                    {"baked", bake.baked},
                    {"reused", bake.reused},

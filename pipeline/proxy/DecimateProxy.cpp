@@ -3,7 +3,7 @@
 
 #include <meshoptimizer.h>
 
-#include "pipeline/proxy/DeviationCheck.h"
+#include "pipeline/proxy/PartwiseSimplify.h"
 #include "pipeline/proxy/ProxyFinish.h"
 #include "pipeline/proxy/SmallParts.h"
 #include "pipeline/proxy/Weld.h"
@@ -25,22 +25,11 @@ std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxErro
     return out;
 }
 
-std::vector<std::uint32_t> simplifyWithinError(const ProxyMesh& mesh, double maxError) {
-    // meshoptimizer's error is an RMS distance (DeviationCheck.h): ask for a fraction of the
-    // budget and back off until the sampled maximum deviation fits the whole budget.
-    for (const double fraction : {0.6, 0.4, 0.25, 0.15}) {
-        std::vector<std::uint32_t> out = simplifyToError(mesh, maxError * fraction);
-        if (out.size() == mesh.indices.size()) return out; // nothing collapsed
-        if (withinDeviation(mesh.positions, mesh.indices, out, maxError)) return out;
-    }
-    return mesh.indices;
-}
-
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options) {
     const auto e = static_cast<float>(maxError);
     weldVertices(input, e * options.weldFraction);
     dropSmallParts(input, e);
-    input.indices = simplifyWithinError(input, maxError * options.simplifyFraction);
+    input.indices = simplifyPartsWithinError(input, maxError * options.simplifyFraction);
     compactMesh(input);
     finishProxy(input);
     return input;

@@ -4,10 +4,10 @@
 //
 // Error: meshoptimizer's own measure is an area-weighted RMS distance to the planes of the
 // collapsed triangles, which real deviations exceed 1.5-3x on curved surfaces; each result is
-// therefore checked with a sampled two-sided Hausdorff test (DeviationCheck.h) and redone
-// with a smaller meshoptimizer target until it fits, so the proxy stays within `maxError`
-// metres of its input (weld displacement included). Topology is kept: holes and thin parts
-// larger than the budget survive, open borders only collapse along themselves.
+// therefore checked with a sampled two-sided Hausdorff test (DeviationCheck.h) part by part and
+// a failing part is redone with a smaller meshoptimizer target (PartwiseSimplify.h), so the proxy
+// stays within `maxError` metres of its input (weld displacement included). Topology is kept: holes
+// and thin parts larger than the budget survive, open borders only collapse along themselves.
 // Output: finished proxy (normals, render layout), never more triangles than the input.
 // Deterministic: single-threaded, depends only on the input.
 #pragma once
@@ -25,11 +25,6 @@ struct DecimateOptions {
 };
 
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options = {});
-
-// The simplification step alone (no weld, no part removal, no finishing): indices into
-// `mesh.positions` whose sampled two-sided deviation from the mesh is within maxError metres
-// (DeviationCheck.h); the input indices when no simplification fits.
-std::vector<std::uint32_t> simplifyWithinError(const ProxyMesh& mesh, double maxError);
 
 // One meshopt_simplify call at meshoptimizer's own (RMS) error measure, no check.
 std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxError);

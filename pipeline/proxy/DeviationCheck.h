@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -22,6 +23,24 @@ namespace hlod {
 
 bool withinDeviation(std::span<const glm::vec3> positions, std::span<const std::uint32_t> original,
                      std::span<const std::uint32_t> simplified, double limit);
+
+// The same test for several candidate simplifications of one mesh: the grid over the original
+// triangles is built once (a part is typically tried at 2-3 targets, see PartwiseSimplify.h).
+// Keeps references to `positions` and `original`.
+class DeviationChecker {
+public:
+    DeviationChecker(std::span<const glm::vec3> positions, std::span<const std::uint32_t> original,
+                     double limit);
+    ~DeviationChecker();
+    bool accepts(std::span<const std::uint32_t> simplified) const;
+
+private:
+    struct Grid;
+    std::span<const glm::vec3> positions_;
+    std::span<const std::uint32_t> original_;
+    float limit_;
+    std::unique_ptr<Grid> grid_;
+};
 
 // One direction only, meshes with their own vertices: every sample of `mesh` (corners, edge
 // midpoints, centroids) lies within `limit` of `reference`'s surface. Used for remeshed

@@ -37,7 +37,9 @@ struct RemeshOptions {
     float voxelFraction = 1.0f; // h = voxelFraction * budget
     float shellVoxels = 0.6f;   // d = shellVoxels * h (must exceed 0.5 to seal, see above)
     float keepVoxels = 0.2f;    // keep = keepVoxels * h, offset left after pulling back
-    float adaptivity = 0.25f;   // OpenVDB volumeToMesh adaptivity (merges flat regions)
+    // OpenVDB volumeToMesh adaptivity. 0: adaptive meshes merge cells into polygons that
+    // meshoptimizer then cannot simplify within the budget (measured: no reduction at all).
+    float adaptivity = 0.0f;
     // Voxel count guard: above this many voxels along the largest axis h grows instead.
     int maxVoxelsPerAxis = 1024;
     // Baker policy (ProxyBaker.cpp makeProxy): a node whose `decimate` proxy has at most this

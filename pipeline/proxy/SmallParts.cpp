@@ -18,8 +18,8 @@ std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t v) {
     return v;
 }
 
-// Component id (the root vertex) per vertex; the smaller index always becomes the root so the
-// result does not depend on the order unions happen in.
+} // namespace
+
 std::vector<std::uint32_t> componentRoots(const ProxyMesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.positions.size());
     for (std::uint32_t v = 0; v < parent.size(); ++v)
@@ -37,8 +37,6 @@ std::vector<std::uint32_t> componentRoots(const ProxyMesh& mesh) {
         parent[v] = findRoot(parent, v);
     return parent;
 }
-
-} // namespace
 
 std::size_t countParts(const ProxyMesh& mesh) {
     const std::vector<std::uint32_t> root = componentRoots(mesh);

@@ -9,12 +9,18 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "pipeline/proxy/ProxyMesh.h"
 
 namespace hlod {
 
 std::size_t dropSmallParts(ProxyMesh& mesh, float minDiagonal);
+
+// Connected component of every vertex, named by its smallest vertex index (so the result does
+// not depend on the order unions happen in); unused vertices are their own component.
+std::vector<std::uint32_t> componentRoots(const ProxyMesh& mesh);
 
 // Number of connected components (for tests and statistics).
 std::size_t countParts(const ProxyMesh& mesh);

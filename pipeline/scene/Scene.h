@@ -33,7 +33,7 @@ struct Material {
 };
 
 // Triangle mesh, 32-bit indices, one material. Normals are always present (computed on import
-// when the source has none); uvs and colors are either empty or one per position.
+// when the source has none); uvs (v = 0 at the image top, as glTF), colors: none or one each.
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;

@@ -2,10 +2,11 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
-#include "pipeline/cluster/CostModel.h"
+#include "pipeline/cluster/CostBounds.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -122,8 +123,50 @@ TEST(CostModel, LowerBoundNeverExceedsARealCost) {
             const glm::dvec3 pa(pos(rng), pos(rng), pos(rng)), pb(pos(rng), pos(rng), pos(rng));
             const ClusterUnit a = boxLeaf(m, pa, pa + glm::dvec3(size(rng), size(rng), size(rng)));
             const ClusterUnit b = boxLeaf(m, pb, pb + glm::dvec3(size(rng), size(rng), size(rng)));
-            EXPECT_LE(m.lowerBound(a, m.regionOf(b)), m.mergeCost(a, b));
-            EXPECT_LE(m.lowerBound(b, m.regionOf(a)), m.mergeCost(a, b));
+            EXPECT_LE(lowerBound(m, a, regionOf(m, b)), m.mergeCost(a, b));
+            EXPECT_LE(lowerBound(m, b, regionOf(m, a)), m.mergeCost(a, b));
+        }
+    }
+}
+
+TEST(CostModel, SetBoundsNeverExceedARealCost) {
+    // Regions of several clusters (as BVH nodes hold them): for every pair of members, neither
+    // the query bound of one member against the other set nor the set-against-set bound may
+    // exceed the real cost, and the self-join's test must not reject a pair at its own cost.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> pos(-15.0, 15.0), size(0.001, 4.0), flat(0.0, 1.0);
+    for (auto [vol, k] : {std::pair{VolumeType::Sphere, 0.0},
+                          {VolumeType::Aabb, 0.0},
+                          {VolumeType::Aabb, 1.0},
+                          {VolumeType::Aabb, 2.0},
+                          {VolumeType::Aabb, 0.5}}) {
+        const CostModel m(vol, k);
+        auto randomSet = [&](std::vector<ClusterUnit>& units) {
+            Region r = emptyRegion();
+            const glm::dvec3 base(pos(rng), pos(rng), pos(rng));
+            for (int i = 0; i < 4; ++i) {
+                const glm::dvec3 lo = base + glm::dvec3(pos(rng), pos(rng), pos(rng)) * 0.3;
+                glm::dvec3 e(size(rng), size(rng), size(rng));
+                if (flat(rng) < 0.3) e[i % 3] = 0.0; // flat parts get the minimum extent
+                units.push_back(boxLeaf(m, lo, lo + e));
+                includeRegion(r, regionOf(m, units.back()));
+            }
+            return r;
+        };
+        for (int trial = 0; trial < 400; ++trial) {
+            std::vector<ClusterUnit> as, bs;
+            const Region ra = randomSet(as);
+            const Region rb = randomSet(bs);
+            for (const ClusterUnit& a : as) {
+                for (const ClusterUnit& b : bs) {
+                    const double cost = m.mergeCost(a, b);
+                    EXPECT_LE(pairLowerBound(m, ra, rb), cost);
+                    EXPECT_FALSE(pairBoundExceeds(m, ra, rb, cost));
+                    EXPECT_LE(lowerBound(m, a, rb), cost);
+                    EXPECT_EQ(m.mergeCostWithin(a, b, cost), cost);
+                    EXPECT_GT(m.mergeCostWithin(a, b, cost * 0.5), cost * 0.5);
+                }
+            }
         }
     }
 }

@@ -6,9 +6,11 @@
 #include <fstream>
 
 #include "TestUtil.h"
+#include "TilesetRules.h"
 #include "pipeline/cluster/Cluster.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/export/Package.h"
+#include "pipeline/io/Import.h"
 #include "pipeline/io/SampleScene.h"
 
 using namespace hlod;
@@ -38,39 +40,6 @@ nlohmann::json readJson(const fs::path& p) {
     return nlohmann::json::parse(in);
 }
 
-// Z-up box (center, 3 half axes aligned with x, y, z) as min/max.
-std::pair<glm::dvec3, glm::dvec3> boxMinMax(const nlohmann::json& b) {
-    const glm::dvec3 c(b[0], b[1], b[2]);
-    const glm::dvec3 h(b[3].get<double>(), b[7].get<double>(), b[11].get<double>());
-    return {c - h, c + h};
-}
-
-void checkTile(const nlohmann::json& tile, const fs::path& dir, std::size_t& tiles) {
-    ++tiles;
-    const auto [mn, mx] = boxMinMax(tile["boundingVolume"]["box"]);
-    const double err = tile["geometricError"];
-    if (tile.contains("content")) {
-        const std::string uri = tile["content"]["uri"];
-        EXPECT_FALSE(fs::path(uri).is_absolute()) << uri;
-        EXPECT_EQ(uri.find(".."), std::string::npos) << uri;
-        EXPECT_TRUE(fs::is_regular_file(dir / uri)) << uri;
-    }
-    if (!tile.contains("children")) {
-        EXPECT_EQ(err, 0.0); // leaves hold the original meshes: no error
-        return;
-    }
-    EXPECT_GT(err, 0.0);
-    for (const auto& child : tile["children"]) {
-        EXPECT_LE(child["geometricError"].get<double>(), err);
-        const auto [cmn, cmx] = boxMinMax(child["boundingVolume"]["box"]);
-        for (int a = 0; a < 3; ++a) {
-            EXPECT_LE(mn[a], cmn[a] + 1e-6);
-            EXPECT_GE(mx[a], cmx[a] - 1e-6);
-        }
-        checkTile(child, dir, tiles);
-    }
-}
-
 } // namespace
 
 TEST(Package, TilesetFollowsThe3DTilesRules) {
@@ -82,7 +51,7 @@ TEST(Package, TilesetFollowsThe3DTilesRules) {
     EXPECT_EQ(ts["root"]["refine"], "REPLACE");
     EXPECT_GE(ts["geometricError"].get<double>(), ts["root"]["geometricError"].get<double>());
     std::size_t tiles = 0;
-    checkTile(ts["root"], tmp / "pkg", tiles);
+    hlod::test::checkTile(ts["root"], tmp / "pkg", tiles);
     EXPECT_EQ(tiles, b.tree.nodes.size()); // one tile per cluster node
     EXPECT_EQ(s.tiles, b.tree.nodes.size());
     EXPECT_FALSE(ts["root"].contains("transform")); // local frame without --geo
@@ -92,8 +61,8 @@ TEST(Package, RootBoxHoldsTheSceneInZUp) {
     hlod::test::TempDir tmp;
     const Built& b = built();
     writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
-    const auto [mn, mx] =
-        boxMinMax(readJson(tmp / "pkg" / "tileset.json")["root"]["boundingVolume"]["box"]);
+    const auto [mn, mx] = hlod::test::boxMinMax(
+        readJson(tmp / "pkg" / "tileset.json")["root"]["boundingVolume"]["box"]);
     // Sample yard: x in [-60, 60], y (up) in [-0.5, 12], z in [-40, 40]; Z-up: (x, -z, y).
     EXPECT_NEAR(mn.x, -60.0, 1e-6);
     EXPECT_NEAR(mx.x, 60.0, 1e-6);
@@ -204,4 +173,15 @@ TEST(Package, UnsafeContentPathIsRefusedOnRead) {
     } catch (const Error& e) {
         EXPECT_EQ(e.code(), ErrorCode::UnsafePath);
     }
+}
+
+TEST(Package, ImportSceneOpensAPackageAsItsOriginalMeshes) {
+    // What the editor does with File > Open on a package folder.
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    const Scene back = importScene({tmp / "pkg"}, ImportOptions{});
+    const auto src = b.scene.stats(), got = back.stats();
+    EXPECT_EQ(got.triangles, src.triangles); // 10,020: the leaves, not the proxies
+    EXPECT_EQ(got.instances, src.instances);
 }

@@ -42,4 +42,5 @@ TEST(BakeStats, HlodRowIsOriginalPlusOneMeshPerProxy) {
     const ProxyShare share = proxyShare(s, tree, bake);
     EXPECT_DOUBLE_EQ(share.allProxies, 0.5); // 12 of 24
     EXPECT_DOUBLE_EQ(share.rootProxy, 0.5);  // the only proxy is the root's
+    EXPECT_DOUBLE_EQ(share.replaced, 0.5);   // it replaces both boxes
 }

@@ -5,6 +5,7 @@
 #include "pipeline/proxy/Aggregate.h"
 #include "pipeline/proxy/DecimateProxy.h"
 #include "pipeline/proxy/ErrorBudget.h"
+#include "pipeline/proxy/PartwiseSimplify.h"
 #include "pipeline/proxy/ProxyTestUtil.h"
 #include "pipeline/proxy/SloppyProxy.h"
 #include "pipeline/proxy/SmallParts.h"
@@ -125,4 +126,40 @@ TEST(SloppyProxy, ClustersDenseMeshesHardAndLeavesCoarseOnesAlone) {
     const Id inst = s.addInstance(s.addMesh(makeBox({0.01f, 0.01f, 0.01f})), s.addNode("c", 0));
     const AggregatePart part{inst, nullptr};
     EXPECT_EQ(sloppyProxy(aggregateParts(s, std::span(&part, 1), {}), 0.005).triangleCount(), 12u);
+}
+
+TEST(PartwiseSimplify, EachPartStaysWithinTheBudgetOfItsOwnInput) {
+    // Two unit spheres 4 m apart in one mesh: two parts, simplified and checked one by one.
+    ProxyMesh both = unitSphereSoup();
+    const ProxyMesh second = unitSphereSoup(glm::dvec3(4.0, 0.0, 0.0));
+    const auto offset = static_cast<std::uint32_t>(both.positions.size());
+    for (const glm::vec3& p : second.positions)
+        both.positions.push_back(p + glm::vec3(4.0f, 0.0f, 0.0f));
+    for (std::uint32_t v : second.indices)
+        both.indices.push_back(v + offset);
+    both.colors.assign(both.positions.size(), glm::u8vec4(255));
+    const double e = 2.0 / 300.0;
+    // The sphere's seam and pole vertices become one, as decimateProxy welds (Weld.h).
+    weldVertices(both, static_cast<float>(e) / 64.0f);
+    // The check bounds the distance to the input mesh; against the analytic sphere the input's
+    // own chord error (4e-4) and the weld shift (1.8e-4) add, so leave 10% of e for them.
+    const std::vector<std::uint32_t> out = simplifyPartsWithinError(both, 0.9 * e);
+    ProxyMesh parts[2];
+    for (std::size_t t = 0; t < out.size(); t += 3) {
+        // Parts come out in the order of their first input triangle: sphere 0 first.
+        const int which = both.positions[out[t]].x > 2.0f ? 1 : 0;
+        if (which == 0) EXPECT_TRUE(parts[1].indices.empty()) << "sphere 0 after sphere 1";
+        for (int k = 0; k < 3; ++k) {
+            parts[which].indices.push_back(
+                static_cast<std::uint32_t>(parts[which].positions.size()));
+            parts[which].positions.push_back(both.positions[out[t + k]]);
+        }
+    }
+    for (int which = 0; which < 2; ++which) {
+        // Each sphere on its own keeps well under half of its 16,128 triangles (as the whole-
+        // mesh test above) and stays within e of the analytic sphere, measured independently.
+        EXPECT_LT(parts[which].triangleCount(), 16128u / 2) << which;
+        EXPECT_GT(parts[which].triangleCount(), 500u) << which;
+        EXPECT_LE(hausdorffToUnitSphere(parts[which], glm::dvec3(4.0 * which, 0.0, 0.0)), e);
+    }
 }

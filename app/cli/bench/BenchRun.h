@@ -1,0 +1,57 @@
+// `hlod bench`: the thesis' evaluation (chapter 6) reproduced on one scene. Builds every
+// requested configuration (Original, DLOD chain, HLOD sphere / AABB k=0,1,2 / octree), flies
+// the camera path, renders each frame of each configuration offscreen with VTK and measures
+// draw calls, triangles, render time and image error against the Original frame.
+//
+// Per frame and configuration:
+// - Original: every instance whose bounding sphere touches the frustum is drawn.
+// - DLOD chain: the same instances, each at the level its projected size allows. With p the
+//   projected diameter (pixels) of the instance's bounding sphere and S the selection threshold,
+//   level 0 (the original) when p > S, else level l >= 1 is allowed when
+//   p <= S * 0.4^((l - 1) / 2), and the coarsest allowed level is drawn. Each level keeps 40%
+//   of the triangles of the one before; at a constant on-screen error the triangle count a mesh
+//   needs grows with the square of its projected size, so each level's threshold is sqrt(0.4)
+//   (0.63) of the previous one, and level 1 switches where an HLOD node of the same size would.
+// - HLOD: the draw list of the front cache selection (LodSelection.h, thesis Algorithm 5).
+// S in render pixels is the bake's screen size (--screen-size, default 300 px at the bake's
+// reference viewport of 1080 px) scaled to the render height: S * height / 1080, so nodes
+// switch at the distances their proxies were baked for (the proxy error there stays <= 1 px
+// of the reference viewport).
+// Frame time is the wall time of vtkRenderWindow::Render() plus glFinish (selection and pixel
+// read-back excluded); before timing, each configuration is rendered once with all its
+// drawables visible so every buffer is on the GPU. Frames are rendered frame-major (all
+// configurations of frame 0, then of frame 1, ...), so slow drift of the machine hits every
+// configuration alike.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "OffscreenRenderer.h"
+#include "pipeline/scene/Scene.h"
+
+namespace hlod::cli {
+
+struct BenchOptions {
+    std::filesystem::path out;
+    std::vector<std::string> inputs; // for the summary
+    int frames = 300;
+    int width = 640;
+    int height = 360;
+    std::vector<std::string> configs; // keys: original dlod sphere aabb0 aabb1 aabb2 octree
+    double screenSize = 300.0;        // bake S at the 1080 px reference viewport
+    std::optional<std::filesystem::path> pathFile;
+    int threads = 0;
+    Shading shading = Shading::Geometry;
+    std::filesystem::path cacheDir; // proxy cache, empty = none
+};
+
+inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",
+                                                    "aabb1",    "aabb2", "octree"};
+
+// Throws hlod::Error; writes summary.json last (and removes an old one first).
+void runBench(const Scene& scene, const BenchOptions& options);
+
+} // namespace hlod::cli

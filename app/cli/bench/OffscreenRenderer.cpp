@@ -1,0 +1,267 @@
+#include "OffscreenRenderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include "pipeline/core/Error.h"
+
+namespace hlod::cli {
+
+namespace {
+
+float toSrgb(float c) {
+    c = std::clamp(c, 0.0f, 1.0f);
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+unsigned char toByte(float c) {
+    return static_cast<unsigned char>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+}
+
+vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
+                                      const std::vector<glm::vec3>& normals,
+                                      const std::vector<std::uint32_t>& indices,
+                                      const std::vector<glm::vec4>* colorsLinear,
+                                      const std::vector<glm::u8vec4>* colors8) {
+    const auto nv = static_cast<vtkIdType>(positions.size());
+    const auto nt = static_cast<vtkIdType>(indices.size() / 3);
+    vtkNew<vtkFloatArray> points;
+    points->SetNumberOfComponents(3);
+    points->SetNumberOfTuples(nv);
+    std::copy_n(&positions[0].x, nv * 3, points->GetPointer(0));
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> pts;
+    pts->SetData(points);
+    poly->SetPoints(pts);
+    vtkNew<vtkIdTypeArray> offsets;
+    vtkNew<vtkIdTypeArray> connectivity;
+    offsets->SetNumberOfTuples(nt + 1);
+    connectivity->SetNumberOfTuples(nt * 3);
+    for (vtkIdType t = 0; t <= nt; ++t)
+        offsets->SetValue(t, t * 3);
+    for (vtkIdType i = 0; i < nt * 3; ++i)
+        connectivity->SetValue(i, indices[static_cast<std::size_t>(i)]);
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(offsets, connectivity);
+    poly->SetPolys(cells);
+    if (normals.size() == positions.size()) {
+        vtkNew<vtkFloatArray> n;
+        n->SetName("Normals");
+        n->SetNumberOfComponents(3);
+        n->SetNumberOfTuples(nv);
+        std::copy_n(&normals[0].x, nv * 3, n->GetPointer(0));
+        poly->GetPointData()->SetNormals(n);
+    }
+    if ((colorsLinear && colorsLinear->size() == positions.size()) ||
+        (colors8 && colors8->size() == positions.size())) {
+        vtkNew<vtkUnsignedCharArray> c;
+        c->SetName("Colors");
+        c->SetNumberOfComponents(3);
+        c->SetNumberOfTuples(nv);
+        unsigned char* p = c->GetPointer(0);
+        for (vtkIdType i = 0; i < nv; ++i) {
+            const glm::vec4 lin = colorsLinear
+                                      ? (*colorsLinear)[static_cast<std::size_t>(i)]
+                                      : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f;
+            for (int k = 0; k < 3; ++k)
+                p[3 * i + k] = toByte(toSrgb(lin[k]));
+        }
+        poly->GetPointData()->SetScalars(c);
+    }
+    return poly;
+}
+
+vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
+    auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            matrix->SetElement(row, col, m[col][row]); // glm is column-major
+    return matrix;
+}
+
+} // namespace
+
+struct OffscreenRenderer::Impl {
+    int width = 0, height = 0;
+    Shading shading = Shading::Geometry;
+    vtkSmartPointer<vtkRenderWindow> window;
+    std::vector<vtkSmartPointer<vtkRenderer>> layers;
+    std::vector<std::vector<vtkSmartPointer<vtkActor>>> actors; // per layer
+    std::vector<std::vector<int>> visible;                      // per layer
+    // Geometry shared by every drawable of the same source mesh (key: Mesh address + colour
+    // mode), so a mesh instanced N times is one polydata.
+    std::map<std::pair<const void*, bool>, vtkSmartPointer<vtkPolyData>> meshes;
+
+    vtkSmartPointer<vtkActor> makeActor(vtkPolyData* poly, const glm::vec4& color,
+                                        bool vertexColors) {
+        vtkNew<vtkPolyDataMapper> mapper;
+        mapper->SetInputData(poly);
+        mapper->SetScalarVisibility(vertexColors);
+        mapper->SetColorModeToDirectScalars();
+        mapper->StaticOn(); // the data never changes: skip the pipeline update per render
+        auto actor = vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(mapper);
+        vtkProperty* p = actor->GetProperty();
+        if (shading == Shading::Geometry) {
+            p->SetColor(0.78, 0.78, 0.76);
+        } else {
+            p->SetColor(toSrgb(color.r), toSrgb(color.g), toSrgb(color.b));
+        }
+        p->SetAmbient(0.15);
+        p->SetDiffuse(0.85);
+        p->SetSpecular(0.0);
+        actor->VisibilityOff();
+        return actor;
+    }
+
+    void setCamera(int layer, const Camera& c) {
+        vtkCamera* cam = layers[static_cast<std::size_t>(layer)]->GetActiveCamera();
+        cam->SetPosition(c.eye.x, c.eye.y, c.eye.z);
+        cam->SetFocalPoint(c.target.x, c.target.y, c.target.z);
+        cam->SetViewUp(c.up.x, c.up.y, c.up.z);
+        cam->SetViewAngle(glm::degrees(c.fovY));
+        cam->SetClippingRange(c.nearPlane, c.farPlane);
+    }
+
+    void activate(int layer) {
+        for (std::size_t i = 0; i < layers.size(); ++i)
+            layers[i]->SetDraw(static_cast<int>(i) == layer ? 1 : 0);
+    }
+};
+
+OffscreenRenderer::OffscreenRenderer(int width, int height, Shading shading)
+    : impl_(std::make_unique<Impl>()) {
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display)
+        throw Error(ErrorCode::InvalidArgument,
+                    "bench renders with VTK, which needs an X display here (Debian's VTK has "
+                    "no EGL/OSMesa): DISPLAY is unset; run it under xvfb-run -a");
+    vtkOutputWindow::GetInstance()->SetDisplayModeToNever(); // no VTK chatter on stderr
+    impl_->width = width;
+    impl_->height = height;
+    impl_->shading = shading;
+    impl_->window = vtkSmartPointer<vtkRenderWindow>::New();
+    impl_->window->SetOffScreenRendering(1);
+    impl_->window->SetMultiSamples(0);
+    impl_->window->SetSize(width, height);
+}
+
+OffscreenRenderer::~OffscreenRenderer() { close(); }
+
+void OffscreenRenderer::close() {
+    if (impl_ && impl_->window) {
+        impl_->window->Finalize();
+        impl_->window = nullptr;
+    }
+}
+
+int OffscreenRenderer::addLayer() {
+    auto r = vtkSmartPointer<vtkRenderer>::New();
+    r->SetBackground(0.93, 0.94, 0.96);
+    r->SetDraw(0);
+    // Default headlight (light follows the camera): the same lighting for every layer.
+    impl_->window->AddRenderer(r);
+    impl_->layers.push_back(r);
+    impl_->actors.emplace_back();
+    impl_->visible.emplace_back();
+    return static_cast<int>(impl_->layers.size()) - 1;
+}
+
+int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& world,
+                               const glm::vec4& color) {
+    const bool colour = impl_->shading == Shading::Colour;
+    const bool vertexColors = colour && mesh.colors.size() == mesh.positions.size();
+    auto& poly = impl_->meshes[{&mesh, vertexColors}];
+    if (!poly)
+        poly = makePoly(mesh.positions, mesh.normals, mesh.indices,
+                        vertexColors ? &mesh.colors : nullptr, nullptr);
+    // Vertex colours are multiplied by the material in Colour mode (VTK: actor colour is
+    // ignored with scalars, so the multiplication happens when the polydata is made; shared
+    // vertex-coloured meshes therefore use the material colour via the actor only).
+    auto actor = impl_->makeActor(poly, color, vertexColors);
+    if (world != glm::dmat4(1.0)) actor->SetUserMatrix(toVtk(world));
+    impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
+    auto& list = impl_->actors[static_cast<std::size_t>(layer)];
+    list.push_back(actor);
+    return static_cast<int>(list.size()) - 1;
+}
+
+int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
+    const bool colour = impl_->shading == Shading::Colour;
+    auto poly = makePoly(proxy.positions, proxy.normals, proxy.indices, nullptr,
+                         colour ? &proxy.colors : nullptr);
+    auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !proxy.colors.empty());
+    actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
+    impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
+    auto& list = impl_->actors[static_cast<std::size_t>(layer)];
+    list.push_back(actor);
+    return static_cast<int>(list.size()) - 1;
+}
+
+void OffscreenRenderer::setVisible(int layer, const std::vector<int>& drawables) {
+    auto& actors = impl_->actors[static_cast<std::size_t>(layer)];
+    auto& visible = impl_->visible[static_cast<std::size_t>(layer)];
+    for (int d : visible)
+        actors[static_cast<std::size_t>(d)]->VisibilityOff();
+    for (int d : drawables)
+        actors[static_cast<std::size_t>(d)]->VisibilityOn();
+    visible = drawables;
+}
+
+void OffscreenRenderer::warmUp(int layer, const Camera& camera) {
+    auto& actors = impl_->actors[static_cast<std::size_t>(layer)];
+    std::vector<int> all(actors.size());
+    for (std::size_t i = 0; i < all.size(); ++i)
+        all[i] = static_cast<int>(i);
+    setVisible(layer, all);
+    render(layer, camera);
+    setVisible(layer, {});
+}
+
+double OffscreenRenderer::render(int layer, const Camera& camera) {
+    impl_->activate(layer);
+    impl_->setCamera(layer, camera);
+    const auto t0 = std::chrono::steady_clock::now();
+    impl_->window->Render();
+    impl_->window->WaitForCompletion(); // glFinish
+    const auto t1 = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::milli>(t1 - t0).count();
+}
+
+RgbImage OffscreenRenderer::readPixels() {
+    const int w = impl_->width, h = impl_->height;
+    vtkNew<vtkUnsignedCharArray> data;
+    impl_->window->GetPixelData(0, 0, w - 1, h - 1, 0, data, 0);
+    RgbImage img(w, h);
+    const unsigned char* src = data->GetPointer(0);
+    const int comps = data->GetNumberOfComponents();
+    for (int y = 0; y < h; ++y) {
+        const unsigned char* row = src + static_cast<std::size_t>(h - 1 - y) * w * comps;
+        for (int x = 0; x < w; ++x)
+            img.set(x, y, Rgb(row[x * comps], row[x * comps + 1], row[x * comps + 2]));
+    }
+    return img;
+}
+
+} // namespace hlod::cli

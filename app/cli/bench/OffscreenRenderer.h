@@ -1,0 +1,53 @@
+// Offscreen VTK rendering for `hlod bench`: one layer (vtkRenderer) per configuration, one
+// actor per drawable (mesh instance, DLOD level of an instance, or proxy) built once, and per
+// frame the visible set toggled, like an engine's draw calls.
+//
+// Needs an X display: Debian's VTK 9.1 is built without EGL and OSMesa, so its offscreen
+// rendering still opens a (hidden) GLX window. Run under `xvfb-run -a` on a headless machine;
+// the constructor throws hlod::Error when DISPLAY is unset.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipeline/eval/Image.h"
+#include "pipeline/proxy/ProxyMesh.h"
+#include "pipeline/scene/Scene.h"
+#include "pipeline/select/Camera.h"
+
+namespace hlod::cli {
+
+enum class Shading { Geometry, Colour };
+
+class OffscreenRenderer {
+public:
+    OffscreenRenderer(int width, int height, Shading shading);
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    int addLayer();
+    // A mesh placed with `world`; `color` used in Colour shading (vertex colours multiply it).
+    // Meshes are converted once and shared by every drawable that uses the same Mesh object.
+    int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color);
+    int addProxy(int layer, const ProxyMesh& proxy);
+
+    // Makes exactly `drawables` of `layer` visible (indices returned by add*).
+    void setVisible(int layer, const std::vector<int>& drawables);
+    // Shows all of a layer's drawables and renders once, so every buffer is on the GPU before
+    // timing (an engine loads its meshes before it draws them).
+    void warmUp(int layer, const Camera& camera);
+    // Renders `layer` only; returns the wall time of Render() plus glFinish, in milliseconds.
+    double render(int layer, const Camera& camera);
+    RgbImage readPixels();
+    // Closes the window; the renderer cannot render afterwards.
+    void close();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace hlod::cli

@@ -1,0 +1,57 @@
+// The Export stage: build statistics and the package (see ExportStep.h). The steps are the ones
+// `hlod build` always ran; they moved here so the editor and the CLI share them.
+#include "pipeline/graph/ExportStep.h"
+
+#include <chrono>
+
+#include <nlohmann/json.hpp>
+
+#include "pipeline/core/Error.h"
+#include "pipeline/proxy/BakeStats.h"
+#include "pipeline/proxy/DlodChain.h"
+
+namespace hlod {
+
+BuildInfo makeBuildInfo(const BuildInputs& in, bool dlod, double* dlodSeconds) {
+    BuildInfo info;
+    info.inputs = in.inputs;
+    info.bake = in.bakeParams;
+    info.clusterParameters = {{"volume", toString(in.cluster.volume)},
+                              {"k", in.cluster.k},
+                              {"max_children", in.cluster.maxChildren}};
+    if (!in.edits.empty()) info.clusterParameters["hand_edits"] = handEditsToJson(in.edits);
+    info.statistics.push_back(originalStats(in.scene));
+    if (dlod) {
+        const DlodSummary chain =
+            summarizeDlodChains(in.scene, DlodParams{}, in.bakeParams.threads);
+        if (dlodSeconds) *dlodSeconds = chain.seconds;
+        info.statistics.push_back(dlodStats(chain));
+    }
+    info.statistics.push_back(hlodStats(in.scene, in.tree, in.bake, hlodVersionName(in.tree)));
+    info.share = proxyShare(in.scene, in.tree, in.bake);
+    return info;
+}
+
+ExportResult exportPackage(const BuildInputs& in, const ExportOptions& options,
+                           const Progress& progress) {
+    if (options.output.empty())
+        throw Error(ErrorCode::InvalidArgument, "missing -o DIR (output folder)");
+    ExportResult out;
+    out.output = options.output;
+    out.info = makeBuildInfo(in, options.dlod, &out.dlodSeconds);
+    progress.throwIfCancelled();
+    const auto t = std::chrono::steady_clock::now();
+    PackageOptions package;
+    package.inputs = in.inputs;
+    package.geo = options.geo;
+    nlohmann::json summary = buildTreeJson(in.scene, in.tree, in.bake, out.info);
+    summary.erase("nodes"); // the package manifest has its own node list
+    package.parameters = summary.value("parameters", nlohmann::json::object());
+    package.statistics = summary;
+    out.written =
+        writePackage(options.output, in.scene, in.tree, in.bake, in.bakeParams, package, progress);
+    out.writeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    return out;
+}
+
+} // namespace hlod

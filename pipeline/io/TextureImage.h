@@ -1,0 +1,29 @@
+// Base colour textures as glTF can carry them: glTF 2.0 core allows PNG and JPEG images only
+// (specification 3.8.4.1). PNG and JPEG bytes pass through unchanged (no recompression loss);
+// any other format stb_image decodes (BMP, TGA, GIF, PSD, PNM, HDR...) is decoded and written
+// as PNG (8-bit RGBA).
+//
+// Contract: nullopt when the bytes are not an image stb_image can decode (the caller falls back
+// to the material's mean colour). Deterministic: the same input gives the same bytes.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace hlod {
+
+struct EncodedImage {
+    std::vector<std::uint8_t> bytes;
+    std::string mimeType; // "image/png" or "image/jpeg"
+};
+
+std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes);
+
+// Reads `file` and encodes it as above; nullopt when missing, unreadable or undecodable.
+std::optional<EncodedImage> loadTextureForGltf(const std::filesystem::path& file);
+
+} // namespace hlod

@@ -1,0 +1,134 @@
+// `hlod bench` end to end on the embedded sample scene: every output exists, frames.csv has one
+// row per frame and configuration, summary.json lists every configuration, Original against
+// itself is the PSNR cap, and HLOD draws fewer meshes than Original. Renders with VTK, so it
+// needs the X server the test runner provides (scripts/test.sh runs ctest under xvfb-run).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "RunCli.h"
+
+using hlod::test::runCli;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempOut {
+    fs::path path;
+    TempOut() {
+        std::random_device rd;
+        path = fs::temp_directory_path() / ("hlod-bench-" + std::to_string(rd()));
+    }
+    ~TempOut() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+bool haveDisplay() {
+    const char* d = std::getenv("DISPLAY");
+    return d && *d;
+}
+
+} // namespace
+
+TEST(Bench, SampleSceneWritesEveryOutput) {
+    if (!haveDisplay()) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
+    TempOut out;
+    const int frames = 12;
+    const auto r = runCli({"bench", "--out", out.path.string(), "--frames", std::to_string(frames),
+                           "--size", "320x180", "--threads", "2", "--no-cache"},
+                          600, 8ull << 30);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    for (const char* name :
+         {"summary.json", "frames.csv", "tables.md", "camera_path.json", "plot_frame_ms.png",
+          "plot_draw_calls.png", "plot_triangles.png", "plot_psnr.png"}) {
+        EXPECT_TRUE(fs::exists(out.path / name)) << name;
+        EXPECT_GT(fs::file_size(out.path / name), 100u) << name;
+    }
+    int sideBySide = 0;
+    for (const auto& e : fs::directory_iterator(out.path)) {
+        const std::string n = e.path().filename().string();
+        if (n.rfind("side_by_side_", 0) == 0 && e.path().extension() == ".png") ++sideBySide;
+        EXPECT_NE(e.path().extension(), ".tmp") << n;
+    }
+    EXPECT_EQ(sideBySide, 3);
+
+    const std::vector<std::string> names{"Original",       "DLOD chain",     "HLOD, sphere",
+                                         "HLOD, AABB k=0", "HLOD, AABB k=1", "HLOD, AABB k=2",
+                                         "HLOD, octree"};
+    std::ifstream csv(out.path / "frames.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(
+        line,
+        "frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels");
+    int rows = 0;
+    while (std::getline(csv, line))
+        if (!line.empty()) ++rows;
+    EXPECT_EQ(rows, frames * static_cast<int>(names.size()));
+
+    std::ifstream in(out.path / "summary.json");
+    const auto j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["configs"].size(), names.size());
+    std::set<std::string> seen;
+    double originalDraws = 0.0;
+    for (const auto& c : j["configs"]) {
+        seen.insert(c["config"].get<std::string>());
+        EXPECT_EQ(c["frames"], frames);
+        EXPECT_GT(c["frame_ms"]["mean"].get<double>(), 0.0);
+        EXPECT_GE(c["frame_ms"]["p95"].get<double>(), 0.0);
+        EXPECT_GE(c["selection_us"]["mean"].get<double>(), 0.0);
+        if (c["config"] == "Original") {
+            EXPECT_EQ(c["psnr_db"]["mean"].get<double>(), 100.0); // the documented cap
+            EXPECT_EQ(c["psnr_db"]["min"].get<double>(), 100.0);
+            originalDraws = c["draw_calls"]["mean"].get<double>();
+        }
+    }
+    for (const std::string& n : names)
+        EXPECT_TRUE(seen.count(n)) << n;
+    EXPECT_GT(originalDraws, 0.0);
+    for (const auto& c : j["configs"]) {
+        const std::string n = c["config"];
+        if (n.rfind("HLOD", 0) == 0) {
+            EXPECT_LT(c["draw_calls"]["mean"].get<double>(), originalDraws) << n;
+            EXPECT_GT(c["psnr_db"]["mean"].get<double>(), 20.0) << n;
+        }
+    }
+    EXPECT_EQ(j["psnr_cap_db"], 100.0);
+}
+
+TEST(Bench, BadArgumentsAreOneLineUsageErrors) {
+    const auto noOut = runCli({"bench"});
+    EXPECT_EQ(noOut.exitCode, 2);
+    EXPECT_NE(noOut.err.find("--out"), std::string::npos) << noOut.err;
+    const auto badConfig = runCli({"bench", "--out", "/tmp/x", "--configs", "original,lod9"});
+    EXPECT_EQ(badConfig.exitCode, 2);
+    EXPECT_NE(badConfig.err.find("lod9"), std::string::npos) << badConfig.err;
+    const auto badSize = runCli({"bench", "--out", "/tmp/x", "--size", "12"});
+    EXPECT_EQ(badSize.exitCode, 2);
+}
+
+TEST(Bench, BadCameraPathNamesTheFile) {
+    if (!haveDisplay()) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
+    TempOut out;
+    fs::create_directories(out.path);
+    const fs::path bad = out.path / "path.json";
+    std::ofstream(bad) << "{\"keys\": [1, 2";
+    const auto r = runCli({"bench", "--out", (out.path / "o").string(), "--path", bad.string(),
+                           "--frames", "2", "--configs", "original"});
+    EXPECT_EQ(r.exitCode, 1);
+    // Progress lines may come first; the error is the last line and names the file.
+    const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+    EXPECT_EQ(last.rfind("hlod bench: error: ", 0), 0u) << r.err;
+    EXPECT_NE(last.find("path.json"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out.path / "o" / "summary.json"));
+}

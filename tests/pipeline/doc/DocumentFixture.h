@@ -1,0 +1,42 @@
+// A document over the seven cubes of CubeFiles.h, clustered with AABB and k = 0 (tree: ABC,
+// DE, FG, {ABC, DE}, root) and baked into a private cache folder, shared by the document tests.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "TestUtil.h"
+#include "doc/CubeFiles.h"
+#include "pipeline/doc/Document.h"
+
+namespace hlod::test {
+
+class DocumentFixture : public ::testing::Test {
+protected:
+    DocumentFixture() : doc(makeSources()) {
+        PipelineGraph& g = doc.graph();
+        g.setParam(doc.clusterNode(), "volume", std::string("aabb"));
+        g.setParam(doc.clusterNode(), "k", 0.0);
+        g.setParam(doc.bakeNode(), "cache_dir", (tmp / "cache").string());
+        g.setParam(doc.bakeNode(), "threads", 2);
+    }
+
+    std::vector<std::filesystem::path> makeSources() {
+        std::filesystem::create_directories(tmp / "scene");
+        return writeSevenCubes(tmp / "scene");
+    }
+
+    // Runs up to the Bake node and returns its result.
+    const BakeResult& bake() {
+        doc.graph().run({doc.bakeNode()});
+        return *doc.graph().output(doc.bakeNode())->bake;
+    }
+    const ClusterTree& tree() {
+        doc.graph().run({doc.clusterNode()});
+        return *doc.currentTree(doc.clusterNode());
+    }
+
+    TempDir tmp;
+    Document doc;
+};
+
+} // namespace hlod::test
