@@ -12,6 +12,7 @@
 #include <QTimer>
 #include <QWheelEvent>
 #include <vtkCamera.h>
+#include <vtkCellPicker.h>
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkLightKit.h>
@@ -30,6 +31,8 @@ constexpr double kOrbitPerPixel = 0.35;
 // Zoom per wheel notch and per pixel of right-drag.
 constexpr double kWheelZoom = 1.15;
 constexpr double kDragZoomPerPixel = 1.01;
+// Pointer travel (pixels) below which a press and release is a click, not a drag.
+constexpr int kClickSlop = 4;
 
 } // namespace
 
@@ -155,6 +158,7 @@ void Viewport::paintGL() {
     state->Reset();
     state->ResetFramebufferBindings();
     state->Push();
+    Q_EMIT aboutToRender();
     renderer_->ResetCameraClippingRange();
     renderWindow_->Render();
     state->Pop();
@@ -193,8 +197,10 @@ void Viewport::setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis, b
     clearScene();
     actors_ = std::move(actors);
     if (actors_) {
-        for (const auto& actor : actors_->actors())
+        for (const auto& actor : actors_->actors()) {
+            actor->SetVisibility(sceneVisible_);
             renderer_->AddActor(actor);
+        }
     }
     controller_.setUpAxis(upAxis);
     if (resetView) this->resetView();
@@ -204,9 +210,38 @@ void Viewport::setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis, b
 void Viewport::clearScene() {
     if (!actors_) return;
     // Removing actors may release their GL buffers: VTK then asks for the context itself.
-    renderer_->RemoveAllViewProps();
+    for (const auto& actor : actors_->actors())
+        renderer_->RemoveActor(actor);
     actors_.reset();
     update();
+}
+
+void Viewport::setSceneActorsVisible(bool visible) {
+    sceneVisible_ = visible;
+    if (actors_)
+        for (const auto& actor : actors_->actors())
+            actor->SetVisibility(visible);
+    update();
+}
+
+int Viewport::frameHeight() const {
+    return static_cast<int>(std::lround(height() * devicePixelRatioF()));
+}
+
+Viewport::PickResult Viewport::pick(const QPoint& pos) {
+    PickResult result;
+    if (!vtkReady_) return result;
+    const qreal dpr = devicePixelRatioF();
+    // VTK's display coordinates start at the bottom left, in device pixels.
+    const double x = (pos.x() + 0.5) * dpr;
+    const double y = (height() - pos.y() - 0.5) * dpr;
+    renderer_->ResetCameraClippingRange();
+    vtkNew<vtkCellPicker> picker;
+    picker->SetTolerance(0.0005);
+    if (picker->Pick(x, y, 0.0, renderer_) == 0) return result;
+    result.prop = picker->GetViewProp();
+    result.cell = picker->GetCellId();
+    return result;
 }
 
 double Viewport::aspect() const {
@@ -215,7 +250,7 @@ double Viewport::aspect() const {
 
 void Viewport::fitView() {
     if (!actors_ || actors_->parts().empty()) return;
-    // Before the first resize the widget has a placeholder size: fit again once it is real.
+    // Before the first resize the widget has a provisional size: fit again once it is real.
     fitPending_ = !isVisible();
     controller_.fit(actors_->fitPoints(), aspect());
     cameraChanged();
@@ -269,6 +304,8 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
         return;
     }
     lastPos_ = event->position().toPoint();
+    pressPos_ = lastPos_;
+    dragged_ = false;
     setInteractive(true);
     event->accept();
 }
@@ -279,6 +316,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     const QPoint pos = event->position().toPoint();
+    // A few pixels of hand jitter still count as a click, and do not turn the view.
+    if (!dragged_ && (pos - pressPos_).manhattanLength() < kClickSlop) return;
+    dragged_ = true;
     const QPoint delta = pos - lastPos_;
     lastPos_ = pos;
     switch (drag_) {
@@ -300,9 +340,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    const bool click = drag_ != Drag::None && !dragged_ && event->button() == Qt::LeftButton &&
+                       !(event->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier));
     drag_ = Drag::None;
     setInteractive(false);
     event->accept();
+    if (click) Q_EMIT clicked(pressPos_);
 }
 
 void Viewport::setInteractive(bool interactive) {

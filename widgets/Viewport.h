@@ -12,6 +12,10 @@
 // Without a usable OpenGL 3.2 context the widget shows a message instead of rendering and
 // reports it through glFailed(); nothing in VTK is touched then.
 // The viewport shows SceneActors it is given; it keeps no scene or pipeline state of its own.
+// Other views add their own props to renderer() (cluster colours, the HLOD preview, overlays):
+// clearScene() removes only the scene's actors. A left click without a drag reports clicked()
+// and pick() finds the prop and cell under a point; aboutToRender() lets a view update what it
+// shows for the exact camera of the coming frame (the HLOD preview's LOD selection).
 #pragma once
 
 #include <memory>
@@ -29,6 +33,7 @@ class QLabel;
 class vtkCamera;
 class vtkGenericOpenGLRenderWindow;
 class vtkObject;
+class vtkProp;
 class vtkRenderer;
 
 namespace hlod::widgets {
@@ -46,6 +51,18 @@ public:
     void setSceneActors(std::shared_ptr<SceneActors> actors, int upAxis = 1, bool resetView = true);
     void clearScene();
     const std::shared_ptr<SceneActors>& sceneActors() const { return actors_; }
+    // Shows or hides the scene's own actors (other display modes draw something else).
+    void setSceneActorsVisible(bool visible);
+    bool sceneActorsVisible() const { return sceneVisible_; }
+
+    struct PickResult {
+        vtkProp* prop = nullptr; // null: nothing pickable under the point
+        vtkIdType cell = -1;
+    };
+    // The pickable prop and cell under `pos` (widget coordinates, logical pixels).
+    PickResult pick(const QPoint& pos);
+    // Height of the rendered frame in device pixels (what a LOD selection projects onto).
+    int frameHeight() const;
 
     // Navigation, also used by menus and tests. Each schedules a repaint.
     void fitView();
@@ -67,6 +84,10 @@ public:
 
 Q_SIGNALS:
     void frameRendered();
+    // Emitted in paintGL before VTK renders (the GL context is current).
+    void aboutToRender();
+    // A left button press and release without dragging, in widget coordinates.
+    void clicked(const QPoint& pos);
     void glFailed(const QString& message);
 
 protected:
@@ -105,6 +126,9 @@ private:
     int frames_ = 0;
     Drag drag_ = Drag::None;
     QPoint lastPos_;
+    QPoint pressPos_;
+    bool dragged_ = false; // the left button moved far enough to be a drag, not a click
+    bool sceneVisible_ = true;
     QTimer settleTimer_; // ends the fast frames after the last wheel event
 };
 

@@ -22,17 +22,21 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 #include <QTreeView>
 #include <QWindow>
 #include <vtkVersion.h>
 
 #include "pipeline/io/Import.h"
+#include "widgets/DisplayController.h"
 #include "widgets/LogView.h"
 #include "widgets/SceneActors.h"
 #include "widgets/SceneLoader.h"
 #include "widgets/SceneTreeModel.h"
+#include "widgets/StudioModel.h"
 #include "widgets/Viewport.h"
+#include "widgets/doc/ProjectSession.h"
 
 using hlod::widgets::LoadedScene;
 
@@ -79,15 +83,20 @@ MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
         setCentralWidget(message);
     }
 
+    model_ = new hlod::widgets::StudioModel(this);
+    if (viewport_) display_ = new hlod::widgets::DisplayController(model_, viewport_, this);
     loader_ = new hlod::widgets::SceneLoader(this);
     connect(loader_, &hlod::widgets::SceneLoader::started, this, &MainWindow::onLoadStarted);
     connect(loader_, &hlod::widgets::SceneLoader::progressed, this, &MainWindow::onLoadProgress);
     connect(loader_, &hlod::widgets::SceneLoader::loaded, this, &MainWindow::onLoaded);
     connect(loader_, &hlod::widgets::SceneLoader::failed, this, &MainWindow::onLoadFailed);
 
+    createSession();
     createDocks();
+    createHlodDocks();
     createActions();
     createStatusBar();
+    createBuildStatus();
     updateTitle();
     updateCounts();
     resize(1280, 800);
@@ -110,8 +119,13 @@ void MainWindow::createActions() {
     rebuildRecentMenu();
     file->addAction(tr("Open &Sample Scene"), this, [this] { openFiles({}); });
     file->addSeparator();
+    addProjectActions(file);
+    file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    createEditMenu();
+    createBuildMenu();
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     QAction* fit = viewMenu_->addAction(tr("&Fit View"));
@@ -149,9 +163,12 @@ void MainWindow::createDocks() {
                                           QHeaderView::ResizeToContents);
     tree_->header()->setSectionResizeMode(hlod::widgets::SceneTreeModel::TrianglesColumn,
                                           QHeaderView::ResizeToContents);
+    treeTabs_ = new QTabWidget;
+    treeTabs_->setDocumentMode(true);
+    treeTabs_->addTab(tree_, tr("Scene"));
     auto* sceneDock = new QDockWidget(tr("Scene"), this);
     sceneDock->setObjectName(QStringLiteral("SceneDock"));
-    sceneDock->setWidget(tree_);
+    sceneDock->setWidget(treeTabs_);
     addDockWidget(Qt::LeftDockWidgetArea, sceneDock);
 
     log_ = new hlod::widgets::LogView;
@@ -197,6 +214,8 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 void MainWindow::openFiles(const QStringList& files) {
+    if (!maybeSave()) return;
+    projectLoad_ = false;
     QStringList absolute;
     for (const QString& file : files)
         absolute << QFileInfo(file).absoluteFilePath();
@@ -250,8 +269,15 @@ void MainWindow::dropEvent(QDropEvent* event) {
     openFiles(files);
 }
 
+const std::shared_ptr<const hlod::Scene>& MainWindow::scene() const { return model_->scene(); }
+
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (writeSettings_ && !maybeSave()) {
+        event->ignore();
+        return;
+    }
     loader_->cancel();
+    model_->cancelBuild();
     if (writeSettings_) {
         QSettings settings;
         settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
@@ -290,20 +316,28 @@ void MainWindow::onLoadProgress(const QString& stage, qint64 done, qint64 total)
 
 void MainWindow::onLoaded(const LoadedScene& result) {
     setBusy(false);
-    scene_ = result.scene;
     sceneFiles_ = result.files;
-    treeModel_->setScene(scene_);
+    model_->setScene(result.scene);
+    if (!projectLoad_) {
+        std::vector<std::filesystem::path> sources;
+        for (const QString& file : result.files)
+            sources.emplace_back(file.toStdString());
+        session_->newDocument(std::move(sources));
+    }
+    projectLoad_ = false;
+    const std::shared_ptr<const hlod::Scene>& loadedScene = model_->scene();
+    treeModel_->setScene(loadedScene);
     tree_->expandToDepth(0);
     if (viewport_) {
         firstFramePending_ = true;
         shownAt_ = std::chrono::steady_clock::now();
-        viewport_->setSceneActors(result.actors, hlod::widgets::suggestedUpAxis(*scene_));
+        viewport_->setSceneActors(result.actors, hlod::widgets::suggestedUpAxis(*loadedScene));
         if (initialAzimuth_ != 0.0 || initialElevation_ != 0.0) {
             viewport_->orbit(initialAzimuth_, initialElevation_);
             viewport_->fitView();
         }
     }
-    const hlod::SceneStats stats = scene_->stats();
+    const hlod::SceneStats stats = loadedScene->stats();
     const QLocale locale;
     log_->info(tr("Loaded %1: %2 instances, %3 triangles, %4 materials (import %5 s, render "
                   "data %6 s, %7)")
@@ -319,11 +353,16 @@ void MainWindow::onLoaded(const LoadedScene& result) {
     }
     updateTitle();
     updateCounts();
-    if (!screenshotPath_.isEmpty()) QTimer::singleShot(0, this, [this] { takeScreenshot(100); });
+    if (startupPending_) {
+        applyStartupView();
+        return;
+    }
+    screenshotWhenReady();
 }
 
 void MainWindow::onLoadFailed(const QStringList& files, const QString& message) {
     setBusy(false);
+    projectLoad_ = false;
     log_->error(message);
     if (!screenshotPath_.isEmpty()) {
         exitScreenshotMode(1, message);
@@ -342,16 +381,20 @@ void MainWindow::onFrameRendered() {
 }
 
 void MainWindow::updateTitle() {
+    // "[*]" is where Qt shows the dirty mark "*" while the window is modified.
     const QString app = tr("HLOD Studio");
-    setWindowTitle(scene_ ? tr("%1 — %2").arg(sceneName(sceneFiles_), app) : app);
+    const QString project = session_->displayName() + QStringLiteral("[*]");
+    setWindowTitle(scene() ? tr("%1 (%2) — %3").arg(project, sceneName(sceneFiles_), app)
+                           : tr("%1 — %2").arg(project, app));
+    setWindowModified(session_->isDirty());
 }
 
 void MainWindow::updateCounts() {
-    if (!scene_) {
+    if (!scene()) {
         counts_->setText(tr("No scene"));
         return;
     }
-    const hlod::SceneStats stats = scene_->stats();
+    const hlod::SceneStats stats = scene()->stats();
     const QLocale locale;
     counts_->setText(tr("Instances: %1   Triangles: %2   Materials: %3")
                          .arg(locale.toString(static_cast<qulonglong>(stats.instances)))

@@ -1,17 +1,29 @@
-// The editor's main window: the VTK viewport in the centre, the scene tree and the log as docks,
-// counts and a busy indicator in the status bar, and the File / View / Help menus.
+// The editor's main window: the VTK viewport in the centre; docks for the scene and cluster
+// trees (two tabs), the build parameters, the statistics and the log; the display toolbar;
+// counts, load and build progress (with Cancel) in the status bar; File / Edit / Build / View /
+// Help.
+// Editing (issue #7): the window owns a ProjectSession (the hlod::Document, its undo history,
+// the project file). The Parameters dock edits the document's parameters through commands,
+// builds take their settings from the document, the Edit menu and the History dock follow its
+// undo stack, the Clusters tab hand-edits clusters, File saves and opens `.hlodproj` projects
+// (dirty mark in the title, save prompt on close, autosave and recovery) and exports packages.
+// Opening a scene (not a project) starts a new untitled project over it, keeping parameters.
 //
-// Ownership: the window holds the open scene as std::shared_ptr<const hlod::Scene> (the seed of
-// the pipeline document to come); the viewport and the tree model only show it.
+// Ownership: the open scene, the HLOD build, the selection and the display options live in one
+// widgets::StudioModel; the viewport, trees, panels and the DisplayController only show them.
+// Building runs in the background (Build ▸ Build HLOD, Ctrl+B); errors go to the log and a
+// message box. Selecting a row in either tree selects in the viewport and back.
 // Loading runs on a worker thread (widgets::SceneLoader); failures go to a message box and the
 // log, and the previous scene stays open.
-// Screenshot mode (--screenshot) waits until the scene is loaded and rendered, saves the image
-// and quits with exit code 0, or 1 with a message on stderr when loading or saving fails, or 2
-// without OpenGL (after saving the window as it looks then).
+// Screenshot mode (--screenshot) waits until the scene is loaded (and, with --build, the HLOD
+// built and the requested mode shown) and rendered, saves the image and quits with exit code 0,
+// or 1 with a message on stderr when loading, building or saving fails, or 2 without OpenGL
+// (after saving the window as it looks then).
 #pragma once
 
 #include <chrono>
 #include <memory>
+#include <optional>
 
 #include <QMainWindow>
 #include <QStringList>
@@ -19,13 +31,24 @@
 #include "RecentScenes.h"
 #include "pipeline/scene/Scene.h"
 
+class QAction;
 class QLabel;
 class QMenu;
 class QProgressBar;
+class QPushButton;
+class QTabWidget;
 class QTreeView;
 
 namespace hlod::widgets {
 struct LoadedScene;
+class BuildParameters;
+class ClusterEditActions;
+class ProjectSession;
+class ClusterTreeModel;
+class DisplayController;
+class DisplayToolBar;
+class StatsPanel;
+class StudioModel;
 class LogView;
 class SceneLoader;
 class SceneTreeModel;
@@ -52,9 +75,34 @@ public:
     // Every scene opened from now on starts from the default view turned by these angles
     // (degrees; see Viewport::orbit) and fitted again.
     void setInitialOrbit(double azimuth, double elevation);
+    // What to do once a scene has loaded (command line): build the HLOD, then show `mode` at
+    // `level` (the suggested level when unset), optionally tinting the HLOD preview by depth.
+    // Used with and without --screenshot.
+    struct StartupView {
+        bool build = false;
+        std::optional<QString> mode; // "original", "clusters", "hlod"
+        std::optional<int> level;
+        bool tintByDepth = false;
+    };
+    void setStartupView(const StartupView& view);
 
     hlod::widgets::Viewport* viewport() const { return viewport_; }
-    const std::shared_ptr<const hlod::Scene>& scene() const { return scene_; }
+    hlod::widgets::StudioModel* model() const { return model_; }
+    hlod::widgets::DisplayController* display() const { return display_; }
+    QTreeView* sceneTree() const { return tree_; }
+    QTreeView* clusterTree() const { return clusterTree_; }
+    QTabWidget* treeTabs() const { return treeTabs_; }
+    hlod::widgets::StatsPanel* statsPanel() const { return stats_; }
+    hlod::widgets::BuildParameters* buildParameters() const { return buildParams_; }
+    hlod::widgets::ProjectSession* session() const { return session_; }
+    hlod::widgets::ClusterEditActions* clusterEdits() const { return clusterEdits_; }
+    // Opens a `.hlodproj` (offering to recover a newer autosave) and loads its scene.
+    bool openProject(const QString& path);
+    // Saves to the current project path (asks for one when untitled); false when not saved.
+    bool saveProject();
+    bool saveProjectAs();
+    hlod::widgets::LogView* log() const { return log_; }
+    const std::shared_ptr<const hlod::Scene>& scene() const;
 
 protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
@@ -65,7 +113,31 @@ private:
     void createActions();
     void createDocks();
     void createStatusBar();
+    // MainWindowHlod.cpp: the HLOD parts (cluster tab, build and statistics docks, toolbar,
+    // Build menu, build progress, selection sync).
+    void createHlodDocks();
+    void createBuildMenu();
+    void createBuildStatus();
+    void onBuildStarted();
+    void onBuildProgress(const QString& stage, qint64 done, qint64 total, const QString& detail);
+    void onBuildFinished();
+    void onBuildFailed(const QString& message);
+    void onBuildCancelled();
+    void hideBuildProgress();
+    void applyStartupView();
+    void screenshotWhenReady();
     void rebuildRecentMenu();
+    // MainWindowEdit.cpp: the document (ProjectSession), Edit menu, History and Parameters
+    // docks, cluster hand edits.
+    void createSession();
+    void createEditMenu();
+    void createEditDocks();
+    // MainWindowProject.cpp: project files, the close prompt, autosave recovery, export.
+    void addProjectActions(QMenu* file);
+    void openProjectDialog();
+    bool maybeSave();
+    void exportDialog();
+    void onDocumentReplaced();
 
     void openDialog();
     void openFolderDialog();
@@ -83,11 +155,29 @@ private:
     void takeScreenshot(int attemptsLeft);
     void exitScreenshotMode(int code, const QString& message);
 
-    std::shared_ptr<const hlod::Scene> scene_;
     QStringList sceneFiles_; // what scene_ was opened from; empty for the sample
 
     hlod::widgets::Viewport* viewport_ = nullptr; // null without OpenGL
+    hlod::widgets::StudioModel* model_ = nullptr;
+    hlod::widgets::DisplayController* display_ = nullptr; // null without OpenGL
     hlod::widgets::SceneTreeModel* treeModel_ = nullptr;
+    hlod::widgets::ClusterTreeModel* clusterModel_ = nullptr;
+    QTreeView* clusterTree_ = nullptr;
+    QTabWidget* treeTabs_ = nullptr;
+    hlod::widgets::StatsPanel* stats_ = nullptr;
+    hlod::widgets::BuildParameters* buildParams_ = nullptr;
+    hlod::widgets::ProjectSession* session_ = nullptr;
+    hlod::widgets::ClusterEditActions* clusterEdits_ = nullptr;
+    QAction* exportAction_ = nullptr;
+    bool projectLoad_ = false; // the running load opens a project's scene (keep the document)
+    hlod::widgets::DisplayToolBar* toolBar_ = nullptr;
+    QLabel* buildLabel_ = nullptr;
+    QProgressBar* buildBar_ = nullptr;
+    QPushButton* cancelButton_ = nullptr;
+    QAction* buildAction_ = nullptr;
+    QAction* cancelAction_ = nullptr;
+    StartupView startup_;
+    bool startupPending_ = false;
     hlod::widgets::SceneLoader* loader_ = nullptr;
     hlod::widgets::LogView* log_ = nullptr;
     QTreeView* tree_ = nullptr;

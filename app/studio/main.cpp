@@ -2,11 +2,15 @@
 // for an OpenGL 3.2 context before any window exists, then opens the main window.
 //
 //   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
+//               [--build] [--mode original|clusters|hlod] [--level N] [--tint-depth]
 //
-// With no file the embedded sample scene opens. --screenshot waits until the scene is loaded
-// and rendered, saves the window (or only the 3D view) and exits: 0 on success, 1 when loading
-// or saving fails, 2 when the arguments are wrong or OpenGL is unavailable (then the image shows
-// the window with its explanation in place of the 3D view).
+// With no file the embedded sample scene opens. --build runs the HLOD pipeline once the scene
+// is loaded; --mode picks the display mode (clusters and hlod need a build and imply --build);
+// --level the cluster level shown in Clusters mode; --tint-depth tints the HLOD preview's
+// drawn nodes by their depth in the tree. --screenshot waits until the scene is
+// loaded (and built) and rendered, saves the window (or only the 3D view) and exits: 0 on
+// success, 1 when loading, building or saving fails, 2 when the arguments are wrong or OpenGL
+// is unavailable (then the image shows the window with its explanation in place of the 3D view).
 #include <cstdio>
 
 #include <QApplication>
@@ -20,6 +24,7 @@
 
 #include "MainWindow.h"
 #include "widgets/GlSupport.h"
+#include "widgets/StudioModel.h"
 
 namespace {
 
@@ -43,7 +48,40 @@ struct Options {
     bool viewportOnly = false;
     QSize size;
     QPointF orbit; // degrees added to the default view: azimuth, elevation
+    MainWindow::StartupView startup;
 };
+
+bool usage(const QString& message) {
+    std::fprintf(stderr, "hlod-studio: %s\n", qPrintable(message));
+    return false;
+}
+
+// --build, --mode, --level into `startup`; false (after printing why) on bad values.
+bool parseStartup(const QCommandLineParser& parser, const QCommandLineOption& build,
+                  const QCommandLineOption& mode, const QCommandLineOption& level,
+                  const QCommandLineOption& tint, MainWindow::StartupView& startup) {
+    startup.build = parser.isSet(build);
+    startup.tintByDepth = parser.isSet(tint);
+    if (parser.isSet(mode)) {
+        hlod::widgets::DisplayMode m;
+        if (!hlod::widgets::displayModeFromString(parser.value(mode), m))
+            return usage(QCoreApplication::translate(
+                             "main", "--mode wants original, clusters or hlod, not \"%1\"")
+                             .arg(parser.value(mode)));
+        startup.mode = parser.value(mode).trimmed().toLower();
+        startup.build = startup.build || m != hlod::widgets::DisplayMode::Original;
+    }
+    if (parser.isSet(level)) {
+        bool ok = false;
+        const int n = parser.value(level).toInt(&ok);
+        if (!ok || n < 0)
+            return usage(QCoreApplication::translate(
+                             "main", "--level wants a cluster level (0 or more), not \"%1\"")
+                             .arg(parser.value(level)));
+        startup.level = n;
+    }
+    return true;
+}
 
 // Returns false (after printing why) on bad arguments.
 bool parseOptions(QApplication& app, Options& options) {
@@ -72,8 +110,24 @@ bool parseOptions(QApplication& app, Options& options) {
         QCoreApplication::translate("main", "Turn the initial view by AZ degrees around the up "
                                             "axis and tilt it by EL degrees, then fit."),
         QStringLiteral("AZ,EL"));
-    parser.addOptions({screenshot, viewportOnly, size, orbit});
+    const QCommandLineOption build(
+        QStringLiteral("build"),
+        QCoreApplication::translate("main", "Build the HLOD once the scene is loaded."));
+    const QCommandLineOption mode(
+        QStringLiteral("mode"),
+        QCoreApplication::translate("main", "Display mode: original, clusters or hlod (the "
+                                            "last two build the HLOD first)."),
+        QStringLiteral("MODE"));
+    const QCommandLineOption level(
+        QStringLiteral("level"),
+        QCoreApplication::translate("main", "Cluster level shown in clusters mode."),
+        QStringLiteral("N"));
+    const QCommandLineOption tint(
+        QStringLiteral("tint-depth"),
+        QCoreApplication::translate("main", "HLOD preview: tint drawn nodes by tree depth."));
+    parser.addOptions({screenshot, viewportOnly, size, orbit, build, mode, level, tint});
     parser.process(app);
+    if (!parseStartup(parser, build, mode, level, tint, options.startup)) return false;
 
     options.files = parser.positionalArguments();
     options.screenshot = parser.value(screenshot);
@@ -141,6 +195,7 @@ int main(int argc, char* argv[]) {
         window.restoreSettings();
     if (options.size.isValid()) window.resize(options.size);
     window.setInitialOrbit(options.orbit.x(), options.orbit.y());
+    window.setStartupView(options.startup);
     window.show();
     window.openFiles(options.files);
     return app.exec();

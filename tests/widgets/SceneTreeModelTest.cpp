@@ -59,7 +59,7 @@ TEST(SceneTreeModel, PassesQtModelConsistencyChecks) {
     EXPECT_EQ(model.rowCount(), 0);
 }
 
-TEST(SceneTreeModel, UnnamedNodesGetAPlaceholderName) {
+TEST(SceneTreeModel, UnnamedNodesGetAGeneratedName) {
     Scene scene;
     scene.addNode("", 0);
     SceneTreeModel model;

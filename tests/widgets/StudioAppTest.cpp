@@ -66,6 +66,28 @@ TEST_F(StudioApp, ViewportOnlyScreenshotIsSmallerThanTheWindow) {
     EXPECT_LT(image.height(), 640); // menu, log dock and status bar take part of the height
 }
 
+TEST_F(StudioApp, BuildsAndScreenshotsEachDisplayMode) {
+    // --mode clusters and hlod imply --build: the screenshot waits for the HLOD of the sample.
+    for (const char* mode : {"original", "clusters", "hlod"}) {
+        const QString out = dir.filePath(QStringLiteral("%1.png").arg(QLatin1String(mode)));
+        const StudioRun run = runStudio(
+            {QStringLiteral("--mode"), QLatin1String(mode), QStringLiteral("--level"),
+             QStringLiteral("2"), QStringLiteral("--viewport-only"), QStringLiteral("--screenshot"),
+             out, QStringLiteral("--size"), QStringLiteral("900x640")});
+        ASSERT_EQ(run.exitCode, 0) << mode << ": " << run.stderrText.toStdString();
+        EXPECT_FALSE(QImage(out).isNull()) << mode;
+    }
+}
+
+TEST_F(StudioApp, BadModeOrLevelExitsWithCodeTwo) {
+    StudioRun run = runStudio({QStringLiteral("--mode"), QStringLiteral("wireframe")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("--mode")));
+    run = runStudio({QStringLiteral("--level"), QStringLiteral("-1")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("--level")));
+}
+
 TEST_F(StudioApp, BrokenFileExitsWithCodeOneAndNamesTheFile) {
     const QString broken = dir.filePath(QStringLiteral("broken.gltf"));
     QFile file(broken);

@@ -1,0 +1,201 @@
+// The HLOD parts of the main window (see MainWindow.h): cluster tree tab, Statistics dock, the
+// display toolbar, the Build menu, build progress with Cancel in the status bar, the two-way
+// selection sync between the trees and the viewport (widgets::SelectionSync), and the command
+// line's startup view (--build, --mode, --level).
+#include "MainWindow.h"
+
+#include <QAction>
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QTreeView>
+
+#include "widgets/ClusterTreeModel.h"
+#include "widgets/DisplayController.h"
+#include "widgets/DisplayToolBar.h"
+#include "widgets/LogView.h"
+#include "widgets/SceneTreeModel.h"
+#include "widgets/SelectionSync.h"
+#include "widgets/StatsPanel.h"
+#include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
+
+using hlod::widgets::StudioModel;
+
+void MainWindow::createHlodDocks() {
+    clusterModel_ = new hlod::widgets::ClusterTreeModel(this);
+    clusterTree_ = new QTreeView;
+    clusterTree_->setModel(clusterModel_);
+    clusterTree_->setUniformRowHeights(true);
+    clusterTree_->setAlternatingRowColors(true);
+    clusterTree_->header()->setStretchLastSection(false);
+    clusterTree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    clusterTree_->header()->setSectionResizeMode(hlod::widgets::ClusterTreeModel::NameColumn,
+                                                 QHeaderView::Stretch);
+    treeTabs_->addTab(clusterTree_, tr("Clusters"));
+
+    createEditDocks(); // the Parameters ("BuildDock") and History docks
+    auto* buildDock = findChild<QDockWidget*>(QStringLiteral("BuildDock"));
+    stats_ = new hlod::widgets::StatsPanel(model_);
+    auto* statsDock = new QDockWidget(tr("Statistics"), this);
+    statsDock->setObjectName(QStringLiteral("StatsDock"));
+    statsDock->setWidget(stats_);
+    addDockWidget(Qt::RightDockWidgetArea, statsDock);
+    resizeDocks({buildDock}, {400}, Qt::Horizontal);
+
+    toolBar_ = new hlod::widgets::DisplayToolBar(model_, this);
+    addToolBar(Qt::TopToolBarArea, toolBar_);
+
+    connect(model_, &StudioModel::buildStarted, this, &MainWindow::onBuildStarted);
+    connect(model_, &StudioModel::buildProgress, this, &MainWindow::onBuildProgress);
+    connect(model_, &StudioModel::buildFinished, this, &MainWindow::onBuildFinished);
+    connect(model_, &StudioModel::buildFailed, this, &MainWindow::onBuildFailed);
+    connect(model_, &StudioModel::buildCancelled, this, &MainWindow::onBuildCancelled);
+    connect(model_, &StudioModel::sceneChanged, this, [this] {
+        clusterModel_->setBuild(nullptr, nullptr);
+        treeTabs_->setCurrentWidget(tree_);
+    });
+    new hlod::widgets::SelectionSync(model_, tree_, treeModel_, clusterTree_, clusterModel_, this);
+    if (display_)
+        connect(display_, &hlod::widgets::DisplayController::frameStats, stats_,
+                &hlod::widgets::StatsPanel::showFrame);
+}
+
+void MainWindow::createBuildMenu() {
+    QMenu* build = menuBar()->addMenu(tr("&Build"));
+    buildAction_ = build->addAction(tr("&Build HLOD"), model_, &StudioModel::build);
+    buildAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    buildAction_->setStatusTip(tr("Cluster the scene and bake the proxies with the parameters "
+                                  "of the Parameters dock, in the background"));
+    cancelAction_ = build->addAction(tr("&Cancel Build"), model_, &StudioModel::cancelBuild);
+    cancelAction_->setEnabled(false);
+    build->addSeparator();
+    build->addActions(
+        {toolBar_->originalAction(), toolBar_->clustersAction(), toolBar_->hlodAction()});
+}
+
+void MainWindow::createBuildStatus() {
+    buildLabel_ = new QLabel;
+    buildBar_ = new QProgressBar;
+    buildBar_->setMaximumWidth(180);
+    buildBar_->setRange(0, 1000);
+    cancelButton_ = new QPushButton(tr("Cancel"));
+    cancelButton_->setToolTip(tr("Stop the running build; the previous HLOD stays"));
+    connect(cancelButton_, &QPushButton::clicked, model_, &StudioModel::cancelBuild);
+    statusBar()->addWidget(buildLabel_);
+    statusBar()->addWidget(buildBar_);
+    statusBar()->addWidget(cancelButton_);
+    hideBuildProgress();
+}
+
+namespace {
+
+QString settingsSummary(const hlod::HlodSettings& s) {
+    QString volume = QString::fromLatin1(hlod::toString(s.cluster.volume));
+    if (s.cluster.volume == hlod::VolumeType::Aabb)
+        volume += QStringLiteral(" k=%1").arg(s.cluster.k);
+    return QCoreApplication::translate("MainWindow", "%1, %2 proxies, S = %3 px")
+        .arg(volume, QString::fromLatin1(hlod::toString(s.bake.method)))
+        .arg(s.bake.screen.screenSize);
+}
+
+} // namespace
+
+void MainWindow::onBuildStarted() {
+    buildLabel_->setText(tr("Building HLOD…"));
+    buildBar_->setRange(0, 0);
+    for (QWidget* w : {static_cast<QWidget*>(buildLabel_), static_cast<QWidget*>(buildBar_),
+                       static_cast<QWidget*>(cancelButton_)})
+        w->show();
+    cancelAction_->setEnabled(true);
+    log_->info(tr("Building the HLOD (%1)").arg(settingsSummary(model_->settings())));
+}
+
+void MainWindow::onBuildProgress(const QString& stage, qint64 done, qint64 total,
+                                 const QString& detail) {
+    const QString what = stage == QLatin1String("cluster") ? tr("Clustering")
+                         : stage == QLatin1String("bake")  ? tr("Baking proxies")
+                                                           : stage;
+    buildLabel_->setText(total > 0 ? tr("%1 %2/%3").arg(what).arg(done).arg(total) : what);
+    buildBar_->setToolTip(detail);
+    if (total > 0) {
+        buildBar_->setRange(0, 1000);
+        buildBar_->setValue(static_cast<int>(1000.0 * double(done) / double(total)));
+    } else {
+        buildBar_->setRange(0, 0);
+    }
+}
+
+void MainWindow::onBuildFinished() {
+    hideBuildProgress();
+    const hlod::widgets::BuiltHlod& built = model_->built();
+    clusterModel_->setBuild(built.scene, built.build);
+    clusterTree_->expandToDepth(0);
+    model_->setLevel(model_->suggestedLevel());
+    const QLocale locale;
+    log_->info(tr("Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, "
+                  "bake %5 s: %6 baked, %7 reused)")
+                   .arg(built.build->tree.nodes.size())
+                   .arg(built.build->tree.height())
+                   .arg(locale.toString(static_cast<qulonglong>(built.build->bake.proxyTriangles)))
+                   .arg(locale.toString(built.build->clusterSeconds, 'f', 2))
+                   .arg(locale.toString(built.build->bakeSeconds, 'f', 2))
+                   .arg(built.build->bake.baked)
+                   .arg(built.build->bake.reused));
+    if (startupPending_) applyStartupView();
+}
+
+void MainWindow::onBuildFailed(const QString& message) {
+    hideBuildProgress();
+    log_->error(message);
+    if (!screenshotPath_.isEmpty()) {
+        exitScreenshotMode(1, message);
+        return;
+    }
+    QMessageBox::warning(this, tr("Could not build the HLOD"), message);
+}
+
+void MainWindow::hideBuildProgress() {
+    for (QWidget* w : {static_cast<QWidget*>(buildLabel_), static_cast<QWidget*>(buildBar_),
+                       static_cast<QWidget*>(cancelButton_)})
+        w->hide();
+    cancelAction_->setEnabled(false);
+}
+
+void MainWindow::onBuildCancelled() {
+    hideBuildProgress();
+    log_->warning(tr("HLOD build cancelled; the previous result stays"));
+    if (!screenshotPath_.isEmpty()) exitScreenshotMode(1, tr("the build was cancelled"));
+}
+
+void MainWindow::setStartupView(const StartupView& view) {
+    startup_ = view;
+    startupPending_ = view.build || view.mode || view.level || view.tintByDepth;
+}
+
+void MainWindow::applyStartupView() {
+    if (startup_.build && !model_->hasBuild()) {
+        model_->build();
+        return; // onBuildFinished comes back here
+    }
+    startupPending_ = false;
+    if (startup_.level) model_->setLevel(*startup_.level);
+    if (startup_.tintByDepth) model_->setTintByDepth(true);
+    hlod::widgets::DisplayMode mode;
+    if (startup_.mode && hlod::widgets::displayModeFromString(*startup_.mode, mode))
+        model_->setMode(mode);
+    screenshotWhenReady();
+}
+
+void MainWindow::screenshotWhenReady() {
+    if (!screenshotPath_.isEmpty()) QTimer::singleShot(0, this, [this] { takeScreenshot(100); });
+}

@@ -1,0 +1,55 @@
+// widgets/graph/NodeGraphView: one box per node with status colours, gestures become requests.
+#include <gtest/gtest.h>
+
+#include <QGraphicsRectItem>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "widgets/graph/NodeGraphView.h"
+
+namespace hlod::widgets {
+namespace {
+
+TEST(NodeGraphView, ShowsEveryNodeWithItsStatusColour) {
+    PipelineGraph g = PipelineGraph::makeDefault();
+    NodeGraphView view;
+    view.setGraph(&g);
+    for (NodeId id : g.nodeIds())
+        ASSERT_NE(view.nodeItem(id), nullptr) << id;
+    // Every node is pending before the first run: the header is amber.
+    auto* header = static_cast<QGraphicsRectItem*>(view.nodeItem(2)->childItems().at(0));
+    EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Pending));
+    g.run({1}); // the embedded sample scene: Import is up to date, the rest pending
+    view.setStatusOnly();
+    auto* importHeader = static_cast<QGraphicsRectItem*>(view.nodeItem(1)->childItems().at(0));
+    EXPECT_EQ(importHeader->brush().color(), NodeGraphView::statusColor(NodeStatus::UpToDate));
+    EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Pending));
+}
+
+TEST(NodeGraphView, DraggingFromAnOutputToAnInputRequestsAConnection) {
+    PipelineGraph g = PipelineGraph::makeDefault();
+    const NodeId extra = g.addNode(NodeKind::Cluster, 220.0, 160.0);
+    NodeGraphView view;
+    view.resize(1000, 500);
+    view.setGraph(&g);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    QSignalSpy requested(&view, &NodeGraphView::connectRequested);
+    QSignalSpy selected(&view, &NodeGraphView::nodeSelected);
+    const QPoint from = view.mapFromScene(view.portPosition(1, true, 0));
+    const QPoint to = view.mapFromScene(view.portPosition(extra, false, 0));
+    QTest::mousePress(view.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(view.viewport(), to);
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, to);
+    ASSERT_EQ(requested.count(), 1);
+    const auto c = requested.at(0).at(0).value<Connection>();
+    EXPECT_EQ(c, (Connection{1, 0, extra, 0}));
+    // A click on the box body selects the node.
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {},
+                      view.mapFromScene(view.portPosition(extra, false, 0) + QPointF(60, 0)));
+    ASSERT_EQ(selected.count(), 1);
+    EXPECT_EQ(selected.at(0).at(0).value<quint32>(), extra);
+}
+
+} // namespace
+} // namespace hlod::widgets

@@ -1,0 +1,155 @@
+// Tests of widgets/StudioModel and HlodBuilder: background builds, cancellation, failures,
+// statistics, and the selection mapping between instances, scene nodes and cluster nodes.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <QSignalSpy>
+#include <QTimer>
+
+#include "TestBuilds.h"
+#include "TestScenes.h"
+#include "pipeline/io/SampleScene.h"
+#include "pipeline/view/TreeViews.h"
+#include "widgets/StudioModel.h"
+
+namespace hlod::widgets {
+namespace {
+
+// Long enough for the sample scene's build on a loaded 2-core machine, short enough to fail.
+constexpr int kBuildWaitMs = 180000;
+
+std::shared_ptr<const Scene> sample() { return std::make_shared<const Scene>(makeSampleScene()); }
+
+TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
+    StudioModel model;
+    model.setScene(sample());
+    model.setSettings(test::testSettings());
+    QSignalSpy finished(&model, &StudioModel::buildFinished);
+    QSignalSpy progress(&model, &StudioModel::buildProgress);
+    // The event loop keeps running while the worker bakes: a timer on the GUI thread ticks.
+    int ticks = 0;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&] { ++ticks; });
+    timer.start(5);
+    model.build();
+    EXPECT_TRUE(model.building());
+    ASSERT_TRUE(finished.wait(kBuildWaitMs));
+    EXPECT_GT(ticks, 0);
+    EXPECT_GT(progress.count(), 0);
+    EXPECT_FALSE(model.building());
+    ASSERT_TRUE(model.hasBuild());
+
+    const BuiltHlod& built = model.built();
+    const ClusterTree& tree = built.build->tree;
+    // The rows the statistics dock shows are exactly BakeStats' rows for this build.
+    const GeometryStats original = originalStats(*model.scene());
+    const GeometryStats hlod = hlodStats(*model.scene(), tree, built.build->bake, "x");
+    EXPECT_EQ(built.original.triangles, original.triangles);
+    EXPECT_EQ(built.original.meshes, original.meshes);
+    EXPECT_EQ(built.hlod.triangles, hlod.triangles);
+    EXPECT_EQ(built.hlod.vertices, hlod.vertices);
+    EXPECT_EQ(built.hlod.bytes, hlod.bytes);
+    // HLOD meshes: one per leaf (original) plus one proxy per inner node.
+    EXPECT_EQ(built.hlod.meshes, tree.nodes.size());
+    EXPECT_EQ(built.hlod.version, "HLOD, sphere");
+    // The root's subtree holds every instance's triangles.
+    EXPECT_EQ(model.subtreeTriangles()[tree.root], model.scene()->stats().triangles);
+    EXPECT_EQ(model.maxLevel(), tree.height());
+}
+
+TEST(StudioModel, CancelEndsWithoutAResultAndTheNextBuildWorks) {
+    StudioModel model;
+    model.setScene(sample());
+    model.setSettings(test::testSettings());
+    QSignalSpy finished(&model, &StudioModel::buildFinished);
+    QSignalSpy cancelled(&model, &StudioModel::buildCancelled);
+    // Cancel right after the run started: the worker thread is already going, the flag is
+    // raised under it. (Cancelling from a queued progress signal raced with the bake, which
+    // now finishes the sample before the signal is delivered.)
+    model.build();
+    ASSERT_TRUE(model.building());
+    model.cancelBuild();
+    ASSERT_TRUE(cancelled.count() > 0 || cancelled.wait(kBuildWaitMs));
+    EXPECT_EQ(finished.count(), 0);
+    EXPECT_FALSE(model.hasBuild());
+    EXPECT_FALSE(model.building());
+
+    model.build();
+    ASSERT_TRUE(finished.wait(kBuildWaitMs));
+    EXPECT_TRUE(model.hasBuild());
+    EXPECT_EQ(cancelled.count(), 1);
+}
+
+TEST(StudioModel, BadParametersFailWithAMessageAndNoResult) {
+    StudioModel model;
+    model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
+    HlodSettings settings = test::testSettings();
+    settings.cluster.maxChildren = 1; // ClusterParams wants at least 2
+    model.setSettings(settings);
+    QSignalSpy failed(&model, &StudioModel::buildFailed);
+    model.build();
+    ASSERT_TRUE(failed.wait(kBuildWaitMs));
+    EXPECT_FALSE(failed.front().front().toString().isEmpty());
+    EXPECT_FALSE(model.hasBuild());
+}
+
+TEST(StudioModel, SelectionMapsBetweenInstancesSceneNodesAndClusters) {
+    StudioModel model;
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    model.setScene(scene);
+    model.setBuilt(test::buildNow(scene));
+    ASSERT_TRUE(model.hasBuild());
+    const ClusterTree& tree = model.built().build->tree;
+    QSignalSpy changed(&model, &StudioModel::selectionChanged);
+
+    // Node 2 "group" holds node 3 "right", which holds instance 1 only.
+    model.selectSceneNode(2);
+    EXPECT_EQ(model.selection().instances, std::vector<Id>{1});
+    EXPECT_EQ(model.selection().clusterNode, leafOfInstance(tree, 1));
+    EXPECT_EQ(changed.count(), 1);
+    model.selectSceneNode(2); // same selection: no signal
+    EXPECT_EQ(changed.count(), 1);
+
+    // The cluster root covers all three instances; they sit on different scene nodes.
+    model.selectClusterNode(tree.root);
+    EXPECT_EQ(model.selection().instances, (std::vector<Id>{0, 1, 2}));
+    EXPECT_EQ(model.selection().sceneNode, kNoId);
+
+    // Instance 2 (the quad) is placed on the root node 0.
+    model.selectInstance(2);
+    EXPECT_EQ(model.selection().sceneNode, 0u);
+    EXPECT_EQ(model.selection().clusterNode, leafOfInstance(tree, 2));
+
+    model.selectInstance(kNoId);
+    EXPECT_TRUE(model.selection().empty());
+}
+
+TEST(StudioModel, OpeningAnotherSceneDropsTheBuildAndGoesBackToOriginal) {
+    StudioModel model;
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    model.setScene(scene);
+    model.setBuilt(test::buildNow(scene));
+    model.setMode(DisplayMode::Hlod);
+    model.selectInstance(0);
+    model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
+    EXPECT_FALSE(model.hasBuild());
+    EXPECT_TRUE(model.selection().empty());
+    EXPECT_EQ(model.view().mode, DisplayMode::Original);
+    // A build of the old scene arriving late is ignored.
+    model.setBuilt(test::buildNow(scene));
+    EXPECT_FALSE(model.hasBuild());
+}
+
+TEST(StudioModel, DisplayModeNamesParse) {
+    DisplayMode mode = DisplayMode::Original;
+    EXPECT_TRUE(displayModeFromString(QStringLiteral("HLOD"), mode));
+    EXPECT_EQ(mode, DisplayMode::Hlod);
+    EXPECT_TRUE(displayModeFromString(QStringLiteral("clusters"), mode));
+    EXPECT_EQ(mode, DisplayMode::Clusters);
+    EXPECT_FALSE(displayModeFromString(QStringLiteral("wireframe"), mode));
+    EXPECT_EQ(mode, DisplayMode::Clusters); // unchanged on failure
+}
+
+} // namespace
+} // namespace hlod::widgets

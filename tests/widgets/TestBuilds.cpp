@@ -1,0 +1,54 @@
+// Synchronous HLOD builds for the widget tests (see TestBuilds.h).
+#include "TestBuilds.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "pipeline/io/SampleScene.h"
+#include "pipeline/scene/Primitives.h"
+
+namespace hlod::widgets::test {
+
+HlodSettings testSettings() {
+    HlodSettings settings;
+    settings.cluster.volume = VolumeType::Sphere;
+    settings.bake.method = ProxyMethod::Decimate;
+    settings.bake.screen.screenSize = 300.0;
+    settings.bake.threads = 2;
+    return settings;
+}
+
+BuiltHlod buildNow(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {
+    BuiltHlod out;
+    auto build = std::make_shared<HlodBuild>(buildHlod(*scene, settings));
+    out.original = originalStats(*scene);
+    out.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+    out.build = std::move(build);
+    out.scene = std::move(scene);
+    return out;
+}
+
+Scene makeCubeRow() {
+    Scene scene;
+    Material red;
+    red.name = "red";
+    red.baseColor = {0.8f, 0.05f, 0.03f, 1.0f};
+    const Id redId = scene.addMaterial(red);
+    const Id grey = scene.addMesh(makeBox({1.0f, 1.0f, 1.0f}));
+    Mesh redCube = makeBox({1.0f, 1.0f, 1.0f});
+    redCube.material = redId;
+    const Id redMesh = scene.addMesh(redCube);
+    for (int i = 0; i < 3; ++i) {
+        const Id node = scene.addNode("cube " + std::to_string(i), 0,
+                                      glm::translate(glm::dmat4(1.0), {4.0 * (i - 1), 0.0, 0.0}));
+        scene.addInstance(i == 1 ? redMesh : grey, node);
+    }
+    scene.updateWorldTransforms();
+    return scene;
+}
+
+const BuiltHlod& sampleBuild() {
+    static const BuiltHlod built = buildNow(std::make_shared<const Scene>(makeSampleScene()));
+    return built;
+}
+
+} // namespace hlod::widgets::test

@@ -1,0 +1,148 @@
+// Item model over an HLOD cluster tree (see ClusterTreeModel.h).
+#include "widgets/ClusterTreeModel.h"
+
+#include <numbers>
+
+#include <QLocale>
+
+#include "pipeline/view/TreeViews.h"
+
+namespace hlod::widgets {
+
+ClusterTreeModel::ClusterTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
+
+void ClusterTreeModel::setBuild(std::shared_ptr<const Scene> scene,
+                                std::shared_ptr<const HlodBuild> build) {
+    beginResetModel();
+    scene_ = build ? std::move(scene) : nullptr;
+    build_ = scene_ ? std::move(build) : nullptr;
+    triangles_.clear();
+    rowInParent_.clear();
+    if (build_) {
+        const ClusterTree& tree = build_->tree;
+        triangles_ = subtreeTriangles(tree, *scene_);
+        rowInParent_.assign(tree.nodes.size(), 0);
+        for (const ClusterNode& node : tree.nodes)
+            for (std::size_t i = 0; i < node.children.size(); ++i)
+                rowInParent_[node.children[i]] = static_cast<int>(i);
+    }
+    endResetModel();
+}
+
+Id ClusterTreeModel::nodeOf(const QModelIndex& index) const {
+    return index.isValid() ? static_cast<Id>(index.internalId()) : kNoId;
+}
+
+QModelIndex ClusterTreeModel::indexOfNode(Id node) const {
+    if (!build_ || node >= build_->tree.nodes.size()) return {};
+    const int row = node == build_->tree.root ? 0 : rowInParent_[node];
+    return createIndex(row, 0, static_cast<quintptr>(node));
+}
+
+QModelIndex ClusterTreeModel::index(int row, int column, const QModelIndex& parent) const {
+    if (!build_ || build_->tree.root == kNoId || row < 0 || column < 0 || column >= ColumnCount)
+        return {};
+    if (!parent.isValid())
+        return row == 0 ? createIndex(0, column, static_cast<quintptr>(build_->tree.root))
+                        : QModelIndex();
+    const auto& children = build_->tree.nodes[nodeOf(parent)].children;
+    if (row >= static_cast<int>(children.size())) return {};
+    return createIndex(row, column, static_cast<quintptr>(children[row]));
+}
+
+QModelIndex ClusterTreeModel::parent(const QModelIndex& child) const {
+    if (!child.isValid() || !build_) return {};
+    const Id parentNode = build_->tree.nodes[nodeOf(child)].parent;
+    return parentNode == kNoId ? QModelIndex() : indexOfNode(parentNode);
+}
+
+int ClusterTreeModel::rowCount(const QModelIndex& parent) const {
+    if (!build_ || build_->tree.root == kNoId) return 0;
+    if (!parent.isValid()) return 1;
+    if (parent.column() != 0) return 0;
+    return static_cast<int>(build_->tree.nodes[nodeOf(parent)].children.size());
+}
+
+int ClusterTreeModel::columnCount(const QModelIndex&) const { return ColumnCount; }
+
+QString ClusterTreeModel::name(Id node) const {
+    if (!build_ || node >= build_->tree.nodes.size()) return {};
+    const ClusterNode& n = build_->tree.nodes[node];
+    if (!n.isLeaf() || n.instance >= scene_->instances.size()) return tr("Cluster %1").arg(node);
+    const MeshInstance& instance = scene_->instances[n.instance];
+    QString label = QString::fromStdString(scene_->nodes[instance.node].name);
+    if (label.isEmpty()) label = QString::fromStdString(scene_->meshes[instance.mesh].name);
+    return label.isEmpty() ? tr("Instance %1").arg(n.instance) : label;
+}
+
+double ClusterTreeModel::volume(Id node) const {
+    if (!build_ || node >= build_->tree.nodes.size()) return 0.0;
+    const ClusterNode& n = build_->tree.nodes[node];
+    if (build_->tree.volume == VolumeType::Sphere)
+        return 4.0 / 3.0 * std::numbers::pi * n.sphere.radius * n.sphere.radius * n.sphere.radius;
+    if (n.box.empty()) return 0.0;
+    const glm::dvec3 e = n.box.max - n.box.min;
+    return e.x * e.y * e.z;
+}
+
+QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || !build_) return {};
+    const Id node = nodeOf(index);
+    const ClusterNode& n = build_->tree.nodes[node];
+    const std::size_t proxy =
+        node < build_->bake.nodes.size() ? build_->bake.nodes[node].proxy.triangleCount() : 0;
+    const QLocale locale;
+    if (role == NodeIdRole) return QVariant::fromValue(static_cast<uint>(node));
+    if (role == Qt::TextAlignmentRole)
+        return index.column() == NameColumn ? QVariant()
+                                            : QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == Qt::ToolTipRole)
+        return n.isLeaf() ? tr("Leaf %1: instance %2").arg(node).arg(n.instance)
+                          : tr("Cluster %1: %2 children, fill %3, cost %4")
+                                .arg(node)
+                                .arg(n.children.size())
+                                .arg(locale.toString(n.fill, 'f', 3))
+                                .arg(locale.toString(n.cost, 'g', 4));
+    if (role != Qt::DisplayRole && role != ValueRole) return {};
+    const bool raw = role == ValueRole;
+    switch (index.column()) {
+    case NameColumn:
+        return name(node);
+    case TrianglesColumn:
+        return raw ? QVariant::fromValue(static_cast<qulonglong>(triangles_[node]))
+                   : QVariant(locale.toString(static_cast<qulonglong>(triangles_[node])));
+    case LevelColumn:
+        return n.level;
+    case VolumeColumn:
+        return raw ? QVariant(volume(node)) : QVariant(locale.toString(volume(node), 'g', 4));
+    case ProxyTrianglesColumn:
+        if (n.isLeaf()) return raw ? QVariant(qulonglong{0}) : QVariant(QStringLiteral("–"));
+        return raw ? QVariant::fromValue(static_cast<qulonglong>(proxy))
+                   : QVariant(locale.toString(static_cast<qulonglong>(proxy)));
+    default:
+        return {};
+    }
+}
+
+QVariant ClusterTreeModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal) return {};
+    if (role == Qt::ToolTipRole && section == VolumeColumn)
+        return tr("Volume of the node's bounding sphere (sphere trees) or box, in m³");
+    if (role != Qt::DisplayRole) return {};
+    switch (section) {
+    case NameColumn:
+        return tr("Cluster");
+    case TrianglesColumn:
+        return tr("Triangles");
+    case LevelColumn:
+        return tr("Level");
+    case VolumeColumn:
+        return tr("Volume (m³)");
+    case ProxyTrianglesColumn:
+        return tr("Proxy triangles");
+    default:
+        return {};
+    }
+}
+
+} // namespace hlod::widgets

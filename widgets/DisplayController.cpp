@@ -1,0 +1,282 @@
+// Display modes, highlight, overlay and picking in the viewport (see DisplayController.h).
+#include "widgets/DisplayController.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QLocale>
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedIntArray.h>
+
+#include "pipeline/view/TreeViews.h"
+#include "widgets/ClusterDisplay.h"
+#include "widgets/SceneActors.h"
+#include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
+
+namespace hlod::widgets {
+
+namespace {
+
+glm::dvec3 toGlm(const double v[3]) { return {v[0], v[1], v[2]}; }
+
+// The id a merged polydata stores for `cell` in `array`; kNoId when there is none.
+Id cellId(vtkActor* actor, const char* array, vtkIdType cell) {
+    if (!actor || cell < 0) return kNoId;
+    auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+    if (!poly) return kNoId;
+    auto* ids = vtkUnsignedIntArray::SafeDownCast(poly->GetCellData()->GetArray(array));
+    if (!ids || cell >= ids->GetNumberOfTuples()) return kNoId;
+    return ids->GetValue(cell);
+}
+
+QString count(std::uint64_t n) { return QLocale().toString(static_cast<qulonglong>(n)); }
+
+} // namespace
+
+DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QObject* parent)
+    : QObject(parent), model_(model), viewport_(viewport) {
+    qRegisterMetaType<hlod::widgets::FrameStats>();
+    clusterActor_ = makeActor(true);
+    previewActor_ = makeActor(true);
+    boundsActor_ = makeActor(false);
+    boundsActor_->GetProperty()->SetLineWidth(1.5f);
+    boundsActor_->PickableOff();
+    highlightActor_ = makeActor(true);
+    highlightActor_->PickableOff();
+    highlightActor_->GetProperty()->SetAmbient(0.45);
+    // Drawn over the same surfaces it highlights: pulled towards the camera in depth.
+    highlightActor_->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2.0, -40.0);
+    overlay_ = vtkSmartPointer<vtkTextActor>::New();
+    vtkTextProperty* text = overlay_->GetTextProperty();
+    text->SetFontSize(15);
+    text->SetColor(1.0, 1.0, 1.0);
+    text->SetBackgroundColor(0.1, 0.12, 0.16);
+    text->SetBackgroundOpacity(0.65);
+    text->SetVerticalJustificationToTop();
+    text->SetJustificationToLeft();
+    overlay_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    overlay_->SetPosition(0.012, 0.975);
+    overlay_->PickableOff();
+    vtkRenderer* renderer = viewport_->renderer();
+    for (vtkProp* prop :
+         {static_cast<vtkProp*>(clusterActor_), static_cast<vtkProp*>(previewActor_),
+          static_cast<vtkProp*>(boundsActor_), static_cast<vtkProp*>(highlightActor_),
+          static_cast<vtkProp*>(overlay_)}) {
+        prop->VisibilityOff();
+        renderer->AddViewProp(prop);
+    }
+
+    connect(model_, &StudioModel::viewChanged, this, &DisplayController::refresh);
+    connect(model_, &StudioModel::sceneChanged, this, &DisplayController::refresh);
+    connect(model_, &StudioModel::buildFinished, this, [this] {
+        previewDirty_ = true;
+        refresh();
+    });
+    connect(model_, &StudioModel::selectionChanged, this, [this] {
+        refreshHighlight();
+        if (model_->view().boundsOfSelectionOnly) refreshClusters();
+        viewport_->update();
+    });
+    connect(viewport_, &Viewport::aboutToRender, this, &DisplayController::beforeRender);
+    connect(viewport_, &Viewport::clicked, this, &DisplayController::pickAt);
+    refresh();
+}
+
+DisplayController::~DisplayController() {
+    if (!viewport_) return;
+    vtkRenderer* renderer = viewport_->renderer();
+    for (vtkProp* prop : {static_cast<vtkProp*>(clusterActor_),
+                          static_cast<vtkProp*>(previewActor_), static_cast<vtkProp*>(boundsActor_),
+                          static_cast<vtkProp*>(highlightActor_), static_cast<vtkProp*>(overlay_)})
+        renderer->RemoveViewProp(prop);
+}
+
+vtkSmartPointer<vtkActor> DisplayController::makeActor(bool lit) const {
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(vtkNew<vtkPolyData>());
+    mapper->SetScalarVisibility(true);
+    mapper->SetColorModeToDirectScalars();
+    actor->SetMapper(mapper);
+    vtkProperty* property = actor->GetProperty();
+    if (lit) {
+        property->SetInterpolationToPhong();
+        property->SetAmbient(0.1);
+        property->SetDiffuse(0.8);
+        property->SetSpecular(0.12);
+        property->SetSpecularPower(24.0);
+    } else {
+        property->LightingOff();
+    }
+    return actor;
+}
+
+void DisplayController::refresh() {
+    const bool built = model_->hasBuild() && model_->scene();
+    const DisplayMode mode = built ? model_->view().mode : DisplayMode::Original;
+    viewport_->setSceneActorsVisible(mode == DisplayMode::Original);
+    clusterActor_->SetVisibility(mode == DisplayMode::Clusters);
+    boundsActor_->SetVisibility(mode == DisplayMode::Clusters &&
+                                model_->view().bounds != BoundsShape::None);
+    previewActor_->SetVisibility(mode == DisplayMode::Hlod);
+    if (mode == DisplayMode::Clusters) refreshClusters();
+    if (mode == DisplayMode::Hlod) previewDirty_ = true;
+    if (!built) {
+        coloring_.reset();
+        coloringFor_ = nullptr;
+        cut_.clear();
+        drawList_.clear();
+        previewActor_->GetMapper()->SetInputDataObject(vtkNew<vtkPolyData>());
+    }
+    refreshHighlight();
+    viewport_->update();
+}
+
+void DisplayController::refreshClusters() {
+    if (!model_->hasBuild() || model_->view().mode != DisplayMode::Clusters) return;
+    const BuiltHlod& built = model_->built();
+    if (!coloring_ || coloringFor_ != built.build.get()) {
+        coloring_ = std::make_unique<ClusterColoring>(*built.scene);
+        coloringFor_ = built.build.get();
+        clusterActor_->GetMapper()->SetInputDataObject(coloring_->polyData());
+    }
+    const ClusterTree& tree = built.build->tree;
+    cut_ = coloring_->colorByLevel(tree, model_->view().level);
+    std::vector<Id> bounded = cut_;
+    const Id selected = model_->selection().clusterNode;
+    if (model_->view().boundsOfSelectionOnly) {
+        // The selected cluster and the level's clusters inside it.
+        bounded.clear();
+        if (selected != kNoId) {
+            bounded.push_back(selected);
+            for (Id n : cut_)
+                if (n != selected && isInSubtree(tree, n, selected)) bounded.push_back(n);
+        }
+    }
+    boundsActor_->GetMapper()->SetInputDataObject(
+        boundsWireframe(tree, bounded, model_->view().bounds));
+    boundsActor_->SetVisibility(model_->view().bounds != BoundsShape::None);
+    coloring_->polyData()->Modified();
+}
+
+void DisplayController::refreshHighlight() {
+    const auto& scene = model_->scene();
+    const StudioSelection& selection = model_->selection();
+    if (!scene || selection.instances.empty()) {
+        highlightActor_->VisibilityOff();
+        return;
+    }
+    highlightActor_->GetMapper()->SetInputDataObject(
+        selectionHighlight(*scene, selection.instances));
+    highlightActor_->VisibilityOn();
+}
+
+Camera DisplayController::currentCamera() const {
+    vtkCamera* vc = viewport_->camera();
+    Camera camera;
+    camera.eye = toGlm(vc->GetPosition());
+    camera.target = toGlm(vc->GetFocalPoint());
+    camera.up = toGlm(vc->GetViewUp());
+    camera.fovY = vc->GetViewAngle() * 3.14159265358979323846 / 180.0;
+    const int h = std::max(viewport_->frameHeight(), 1);
+    camera.viewportHeight = h;
+    camera.aspect =
+        viewport_->height() > 0 ? double(viewport_->width()) / viewport_->height() : 1.0;
+    // Depth never culls in the preview: everything in front of the eye may be drawn.
+    const double distance = vc->GetDistance();
+    camera.nearPlane = std::max(distance * 1e-6, 1e-6);
+    camera.farPlane = std::max(distance * 1e6, 1e6);
+    return camera;
+}
+
+void DisplayController::beforeRender() {
+    const DisplayMode mode = model_->hasBuild() ? model_->view().mode : DisplayMode::Original;
+    FrameStats stats;
+    if (mode == DisplayMode::Hlod) {
+        updatePreview();
+        return; // updatePreview reports the frame
+    }
+    if (model_->scene()) {
+        // The original scene (also under the cluster colours): one draw per instance.
+        const SceneStats s = model_->scene()->stats();
+        stats.drawCalls = s.drawCalls;
+        stats.triangles = s.triangles;
+    }
+    last_ = stats;
+    if (mode == DisplayMode::Clusters)
+        setOverlay(tr("Level %1 of %2: %3 clusters")
+                       .arg(model_->view().level)
+                       .arg(model_->maxLevel())
+                       .arg(cut_.size()));
+    else
+        setOverlay({});
+    Q_EMIT frameStats(stats);
+}
+
+void DisplayController::updatePreview() {
+    const BuiltHlod& built = model_->built();
+    const SelectionResult result = model_->selectLod(currentCamera());
+    if (previewDirty_ || result.drawList != drawList_) {
+        drawList_ = result.drawList;
+        const std::vector<int>* depths = model_->view().tintByDepth ? &model_->depths() : nullptr;
+        previewActor_->GetMapper()->SetInputDataObject(
+            hlodPreview(*built.scene, *built.build, drawList_, depths));
+        previewDirty_ = false;
+    }
+    last_ = {result.drawCalls, result.triangles, result.nodesVisited};
+    setOverlay(tr("Draw calls: %1\nTriangles: %2\nNodes visited: %3")
+                   .arg(count(last_.drawCalls), count(last_.triangles), count(last_.nodesVisited)));
+    Q_EMIT frameStats(last_);
+}
+
+void DisplayController::setOverlay(const QString& text) {
+    overlay_->SetVisibility(!text.isEmpty());
+    const QByteArray utf8 = text.toUtf8();
+    if (utf8 != overlay_->GetInput()) overlay_->SetInput(utf8.constData());
+}
+
+QString DisplayController::overlayText() const {
+    if (!overlay_->GetVisibility() || !overlay_->GetInput()) return {};
+    return QString::fromUtf8(overlay_->GetInput());
+}
+
+void DisplayController::pickAt(const QPoint& pos) {
+    const Viewport::PickResult hit = viewport_->pick(pos);
+    if (!hit.prop) {
+        model_->clearSelection();
+        return;
+    }
+    auto* actor = vtkActor::SafeDownCast(hit.prop);
+    if (actor == previewActor_.Get()) {
+        const Id node = cellId(actor, kNodeIdArray, hit.cell);
+        const BuiltHlod& built = model_->built();
+        if (node < built.build->tree.nodes.size() && built.build->tree.nodes[node].isLeaf())
+            model_->selectInstance(built.build->tree.nodes[node].instance);
+        else
+            model_->selectClusterNode(node);
+        return;
+    }
+    if (actor == clusterActor_.Get()) {
+        model_->selectInstance(cellId(actor, SceneActors::kInstanceIdArray, hit.cell));
+        return;
+    }
+    const auto& sceneActors = viewport_->sceneActors();
+    if (!sceneActors) return;
+    const auto& actors = sceneActors->actors();
+    for (std::size_t part = 0; part < actors.size(); ++part)
+        if (actors[part].Get() == actor) {
+            model_->selectInstance(sceneActors->instanceOf(part, hit.cell));
+            return;
+        }
+}
+
+} // namespace hlod::widgets

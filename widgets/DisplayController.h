@@ -1,0 +1,92 @@
+// Puts the StudioModel's display mode into the Viewport: the original scene, the clusters of a
+// level with their bounds, or the HLOD preview; plus the selection highlight, the overlay with
+// the frame's counters, and picking.
+//
+// HLOD preview: right before each frame (Viewport::aboutToRender) the model's LOD selection
+// runs for the viewport's camera (its FrontCache: only the change since the last frame is
+// walked); when the draw list changed the preview geometry is rebuilt, so the view shows
+// exactly what an engine would draw for this camera: proxies of drawn inner nodes, original
+// meshes of drawn leaves. Every frame's counters go out through frameStats().
+// Picking: a click selects the instance (original scene, clusters) or the cluster node (HLOD
+// preview; a drawn leaf selects its instance) under the cursor; a click on nothing clears it.
+// The controller owns VTK props only; all state it shows comes from the model.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <QObject>
+#include <QPoint>
+#include <QPointer>
+#include <vtkSmartPointer.h>
+
+#include "pipeline/select/Camera.h"
+#include "pipeline/select/LodSelection.h"
+
+class vtkActor;
+class vtkProp;
+class vtkTextActor;
+
+namespace hlod::widgets {
+
+class ClusterColoring;
+class StudioModel;
+class Viewport;
+
+// What a frame costs to draw, as a renderer would count it.
+struct FrameStats {
+    std::uint64_t drawCalls = 0;
+    std::uint64_t triangles = 0;
+    std::uint64_t nodesVisited = 0; // HLOD preview only: nodes the selection tested
+};
+
+class DisplayController : public QObject {
+    Q_OBJECT
+public:
+    DisplayController(StudioModel* model, Viewport* viewport, QObject* parent = nullptr);
+    ~DisplayController() override;
+
+    // The selection camera for the viewport's current vtkCamera and size.
+    Camera currentCamera() const;
+    // Selects what is under `pos` (widget coordinates) in the model.
+    void pickAt(const QPoint& pos);
+
+    const FrameStats& lastFrame() const { return last_; }
+    // The draw list of the last HLOD preview frame (sorted node ids).
+    const std::vector<Id>& drawList() const { return drawList_; }
+    // Clusters shown in Clusters mode (the level's cut).
+    const std::vector<Id>& shownClusters() const { return cut_; }
+    // The overlay's text (empty when hidden).
+    QString overlayText() const;
+
+Q_SIGNALS:
+    void frameStats(const hlod::widgets::FrameStats& stats);
+
+private:
+    void refresh();
+    void refreshClusters();
+    void refreshHighlight();
+    void beforeRender();
+    void updatePreview();
+    void setOverlay(const QString& text);
+    vtkSmartPointer<vtkActor> makeActor(bool lit) const;
+
+    StudioModel* model_;
+    QPointer<Viewport> viewport_; // the viewport may go first when a window closes
+    vtkSmartPointer<vtkActor> clusterActor_;
+    vtkSmartPointer<vtkActor> boundsActor_;
+    vtkSmartPointer<vtkActor> previewActor_;
+    vtkSmartPointer<vtkActor> highlightActor_;
+    vtkSmartPointer<vtkTextActor> overlay_;
+    std::unique_ptr<ClusterColoring> coloring_;
+    const void* coloringFor_ = nullptr; // the build the colouring was made for
+    std::vector<Id> cut_;
+    std::vector<Id> drawList_;
+    bool previewDirty_ = true;
+    FrameStats last_;
+};
+
+} // namespace hlod::widgets
+
+Q_DECLARE_METATYPE(hlod::widgets::FrameStats)

@@ -1,0 +1,130 @@
+// Background HLOD builds (see HlodBuilder.h).
+#include "widgets/HlodBuilder.h"
+
+#include <chrono>
+#include <exception>
+#include <new>
+
+#include <QMetaObject>
+
+#include "pipeline/core/Error.h"
+
+namespace hlod::widgets {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+} // namespace
+
+HlodBuilder::HlodBuilder(QObject* parent) : QObject(parent) {
+    qRegisterMetaType<hlod::widgets::BuiltHlod>();
+}
+
+HlodBuilder::~HlodBuilder() {
+    for (auto& job : jobs_) {
+        job->cancel = true;
+        if (job->thread.joinable()) job->thread.join();
+    }
+}
+
+void HlodBuilder::cancel() {
+    for (auto& job : jobs_)
+        if (job->id == current_) job->cancel = true;
+}
+
+void HlodBuilder::abandon() {
+    for (auto& job : jobs_)
+        job->cancel = true;
+    current_ = 0;
+}
+
+void HlodBuilder::start(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {
+    abandon();
+    auto job = std::make_unique<Job>();
+    job->id = nextId_++;
+    current_ = job->id;
+    Job* raw = job.get();
+    jobs_.push_back(std::move(job));
+    Q_EMIT started();
+    raw->thread =
+        std::thread([this, raw, scene = std::move(scene), settings] { run(raw, scene, settings); });
+}
+
+void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings) {
+    const std::uint64_t id = job->id;
+    auto post = [this](auto&& fn) {
+        QMetaObject::invokeMethod(this, std::forward<decltype(fn)>(fn), Qt::QueuedConnection);
+    };
+    // The baker reports from several worker threads: a shared, locked timestamp throttles.
+    struct Throttle {
+        std::mutex mutex;
+        Clock::time_point last;
+    };
+    auto throttle = std::make_shared<Throttle>();
+    Progress progress;
+    progress.cancel = &job->cancel;
+    progress.report = [this, id, post, throttle](const ProgressInfo& info) {
+        {
+            const std::lock_guard lock(throttle->mutex);
+            const auto now = Clock::now();
+            const bool last = info.total > 0 && info.done == info.total;
+            if (!last && now - throttle->last < std::chrono::milliseconds(100)) return;
+            throttle->last = now;
+        }
+        const QString stage = QString::fromStdString(info.stage);
+        const QString detail = QString::fromStdString(info.detail);
+        const auto done = static_cast<qint64>(info.done);
+        const auto total = static_cast<qint64>(info.total);
+        post([this, id, stage, done, total, detail] {
+            if (id == current_) Q_EMIT progressed(stage, done, total, detail);
+        });
+    };
+
+    BuiltHlod result;
+    QString error;
+    bool wasCancelled = false;
+    try {
+        const auto start = Clock::now();
+        auto build = std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress));
+        result.original = originalStats(*scene);
+        result.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        result.build = std::move(build);
+        result.scene = std::move(scene);
+    } catch (const Error& e) {
+        wasCancelled = e.code() == ErrorCode::Cancelled;
+        error = QString::fromStdString(e.what());
+    } catch (const std::bad_alloc&) {
+        error = tr("Not enough memory to build the HLOD of this scene");
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+    } catch (...) {
+        error = tr("Unexpected error while building the HLOD");
+    }
+    // A cancel that arrives after the last node baked still means "no result".
+    wasCancelled = wasCancelled || job->cancel.load();
+    post([this, id, result = std::move(result), error, wasCancelled] {
+        finish(id);
+        if (id != current_) return;
+        current_ = 0;
+        if (wasCancelled)
+            Q_EMIT cancelled();
+        else if (!error.isEmpty())
+            Q_EMIT failed(error);
+        else
+            Q_EMIT finished(result);
+    });
+}
+
+void HlodBuilder::finish(std::uint64_t id) {
+    // The worker's last act was posting this call, so joining it here waits for nothing.
+    for (auto it = jobs_.begin(); it != jobs_.end(); ++it) {
+        if ((*it)->id != id) continue;
+        if ((*it)->thread.joinable()) (*it)->thread.join();
+        jobs_.erase(it);
+        return;
+    }
+}
+
+} // namespace hlod::widgets

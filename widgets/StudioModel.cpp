@@ -1,0 +1,235 @@
+// The editor's state owner (see StudioModel.h).
+#include "widgets/StudioModel.h"
+
+#include <algorithm>
+
+#include "pipeline/view/TreeViews.h"
+#include "widgets/doc/ProjectSession.h"
+
+namespace hlod::widgets {
+
+bool displayModeFromString(const QString& text, DisplayMode& mode) {
+    const QString t = text.trimmed().toLower();
+    if (t == QLatin1String("original"))
+        mode = DisplayMode::Original;
+    else if (t == QLatin1String("clusters"))
+        mode = DisplayMode::Clusters;
+    else if (t == QLatin1String("hlod"))
+        mode = DisplayMode::Hlod;
+    else
+        return false;
+    return true;
+}
+
+StudioModel::StudioModel(QObject* parent) : QObject(parent), builder_(new HlodBuilder(this)) {
+    connect(builder_, &HlodBuilder::started, this, &StudioModel::buildStarted);
+    connect(builder_, &HlodBuilder::progressed, this, &StudioModel::buildProgress);
+    connect(builder_, &HlodBuilder::finished, this, &StudioModel::setBuilt);
+    connect(builder_, &HlodBuilder::failed, this, &StudioModel::buildFailed);
+    connect(builder_, &HlodBuilder::cancelled, this, &StudioModel::buildCancelled);
+}
+
+StudioModel::~StudioModel() = default;
+
+void StudioModel::setScene(std::shared_ptr<const Scene> scene) {
+    const bool wasBuilding = builder_->busy();
+    builder_->abandon();
+    scene_ = std::move(scene);
+    nodeInstances_.clear();
+    if (scene_) {
+        nodeInstances_.resize(scene_->nodes.size());
+        for (Id i = 0; i < scene_->instances.size(); ++i)
+            if (scene_->instances[i].node < nodeInstances_.size())
+                nodeInstances_[scene_->instances[i].node].push_back(i);
+    }
+    frontCache_.reset();
+    selectionTree_.reset();
+    built_ = {};
+    subtreeTriangles_.clear();
+    depths_.clear();
+    leafOfInstance_.clear();
+    selection_ = {};
+    if (wasBuilding) Q_EMIT buildCancelled();
+    Q_EMIT sceneChanged();
+    Q_EMIT selectionChanged();
+    ViewOptions view = view_;
+    view.mode = DisplayMode::Original; // nothing else to show until a build exists
+    setView(view);
+}
+
+void StudioModel::setSettings(const HlodSettings& settings) {
+    settings_ = settings;
+    Q_EMIT settingsChanged();
+}
+
+void StudioModel::setDocument(const Document* doc) {
+    document_ = doc;
+    syncSettings();
+}
+
+void StudioModel::syncSettings() {
+    if (document_) setSettings(settingsOf(*document_));
+}
+
+void StudioModel::build() {
+    if (!scene_) return;
+    syncSettings();
+    builder_->start(scene_, settings_);
+}
+
+void StudioModel::cancelBuild() { builder_->cancel(); }
+
+void StudioModel::setBuilt(const BuiltHlod& result) {
+    if (result.scene != scene_) return; // built for a scene that is no longer open
+    frontCache_.reset();
+    selectionTree_.reset();
+    built_ = result;
+    const ClusterTree& tree = built_.build->tree;
+    subtreeTriangles_ = hlod::subtreeTriangles(tree, *scene_);
+    depths_ = nodeDepths(tree);
+    leafOfInstance_.assign(scene_->instances.size(), kNoId);
+    std::vector<std::uint64_t> drawCost(tree.nodes.size(), 0);
+    for (Id n = 0; n < tree.nodes.size(); ++n) {
+        const ClusterNode& node = tree.nodes[n];
+        if (node.isLeaf()) {
+            drawCost[n] = subtreeTriangles_[n];
+            if (node.instance < leafOfInstance_.size()) leafOfInstance_[node.instance] = n;
+        } else if (n < built_.build->bake.nodes.size()) {
+            drawCost[n] = built_.build->bake.nodes[n].proxy.triangleCount();
+        }
+    }
+    selectionTree_ = std::make_unique<SelectionTree>(tree, std::move(drawCost));
+    frontCache_ = std::make_unique<FrontCache>(*selectionTree_);
+    // The selection keeps its instances; its cluster node is re-derived for the new tree.
+    StudioSelection selection = selection_;
+    selection.clusterNode =
+        selection.instances.size() == 1 ? leafOfInstance_[selection.instances[0]] : kNoId;
+    Q_EMIT buildFinished();
+    setSelection(std::move(selection));
+    ViewOptions view = view_;
+    view.level = std::clamp(view.level, 0, maxLevel());
+    setView(view);
+}
+
+int StudioModel::maxLevel() const { return hasBuild() ? built_.build->tree.height() : 0; }
+
+int StudioModel::suggestedLevel() const {
+    if (!hasBuild()) return 0;
+    const ClusterTree& tree = built_.build->tree;
+    for (int level = 1; level < tree.height(); ++level)
+        if (nodesAtLevel(tree, level).size() <= 12) return level;
+    return tree.height();
+}
+
+std::vector<Id> StudioModel::instancesBelowSceneNode(Id node) const {
+    std::vector<Id> out;
+    if (!scene_ || node >= scene_->nodes.size()) return out;
+    std::vector<Id> stack{node};
+    std::vector<char> seen(scene_->nodes.size(), 0); // a malformed hierarchy must not loop
+    while (!stack.empty()) {
+        const Id n = stack.back();
+        stack.pop_back();
+        if (seen[n]) continue;
+        seen[n] = 1;
+        out.insert(out.end(), nodeInstances_[n].begin(), nodeInstances_[n].end());
+        for (Id child : scene_->nodes[n].children)
+            if (child < scene_->nodes.size()) stack.push_back(child);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void StudioModel::selectInstance(Id instance) {
+    if (!scene_ || instance >= scene_->instances.size()) {
+        clearSelection();
+        return;
+    }
+    StudioSelection s;
+    s.instances = {instance};
+    s.sceneNode = scene_->instances[instance].node;
+    s.clusterNode = instance < leafOfInstance_.size() ? leafOfInstance_[instance] : kNoId;
+    setSelection(std::move(s));
+}
+
+void StudioModel::selectSceneNode(Id node) {
+    if (!scene_ || node >= scene_->nodes.size()) {
+        clearSelection();
+        return;
+    }
+    StudioSelection s;
+    s.sceneNode = node;
+    s.instances = instancesBelowSceneNode(node);
+    if (s.instances.size() == 1 && s.instances[0] < leafOfInstance_.size())
+        s.clusterNode = leafOfInstance_[s.instances[0]];
+    setSelection(std::move(s));
+}
+
+void StudioModel::selectClusterNode(Id node) {
+    if (!hasBuild() || node >= built_.build->tree.nodes.size()) {
+        clearSelection();
+        return;
+    }
+    StudioSelection s;
+    s.clusterNode = node;
+    s.instances = instancesBelow(built_.build->tree, node);
+    std::sort(s.instances.begin(), s.instances.end());
+    if (s.instances.size() == 1) s.sceneNode = scene_->instances[s.instances[0]].node;
+    setSelection(std::move(s));
+}
+
+void StudioModel::clearSelection() { setSelection({}); }
+
+void StudioModel::setSelection(StudioSelection selection) {
+    if (selection == selection_) return;
+    selection_ = std::move(selection);
+    Q_EMIT selectionChanged();
+}
+
+void StudioModel::setView(const ViewOptions& view) {
+    const bool same = view.mode == view_.mode && view.level == view_.level &&
+                      view.bounds == view_.bounds &&
+                      view.boundsOfSelectionOnly == view_.boundsOfSelectionOnly &&
+                      view.tintByDepth == view_.tintByDepth;
+    if (same) return;
+    view_ = view;
+    Q_EMIT viewChanged();
+}
+
+void StudioModel::setMode(DisplayMode mode) {
+    ViewOptions v = view_;
+    v.mode = mode;
+    setView(v);
+}
+
+void StudioModel::setLevel(int level) {
+    ViewOptions v = view_;
+    v.level = std::clamp(level, 0, maxLevel());
+    setView(v);
+}
+
+void StudioModel::setBounds(BoundsShape bounds) {
+    ViewOptions v = view_;
+    v.bounds = bounds;
+    setView(v);
+}
+
+void StudioModel::setBoundsOfSelectionOnly(bool on) {
+    ViewOptions v = view_;
+    v.boundsOfSelectionOnly = on;
+    setView(v);
+}
+
+void StudioModel::setTintByDepth(bool on) {
+    ViewOptions v = view_;
+    v.tintByDepth = on;
+    setView(v);
+}
+
+SelectionResult StudioModel::selectLod(const Camera& camera) {
+    if (!frontCache_) return {};
+    SelectionParams params;
+    params.screenSizePx = built_.build->settings.bake.screen.screenSize;
+    return frontCache_->select(camera, params);
+}
+
+} // namespace hlod::widgets

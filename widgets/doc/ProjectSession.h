@@ -1,0 +1,90 @@
+// The editor's open project: one hlod::Document (parameters, sources, hand edits, view state;
+// the single source of truth, DESIGN.md "Undo belongs to the document"), its UndoAdapter, the
+// `.hlodproj` path it was opened from or saved to, and the autosave (ProjectFile.h).
+//
+// Dirty: the document differs from the saved file: the undo stack is not at its clean index, or
+// the content was recovered from an autosave and not saved since. dirtyChanged() follows it.
+// Autosave: every kAutosaveMs while dirty and the project has a path, the document is written
+// to `<project>.autosave`; saving removes it. Untitled projects are not autosaved.
+// Replacing the document (newDocument, open) keeps the same Document and UndoAdapter objects,
+// so widgets bound to them (ParameterPanel) stay valid; both histories are cleared.
+// Failure: save/open throw hlod::Error (the caller shows it); nothing changes on failure.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <QObject>
+#include <QString>
+
+#include "pipeline/doc/Document.h"
+#include "pipeline/doc/HlodBuild.h"
+#include "widgets/doc/UndoAdapter.h"
+
+class QTimer;
+
+namespace hlod::widgets {
+
+class ProjectSession : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kAutosaveMs = 2 * 60 * 1000;
+
+    explicit ProjectSession(QObject* parent = nullptr);
+    ~ProjectSession() override;
+
+    Document& document() { return *doc_; }
+    const Document& document() const { return *doc_; }
+    UndoAdapter* undo() { return undo_.get(); }
+
+    // Empty for an untitled project.
+    const QString& projectPath() const { return path_; }
+    // "name.hlodproj", or "Untitled" for an untitled project.
+    QString displayName() const;
+    bool isDirty() const;
+    // Whether closing should ask "save changes?" (the same as isDirty()).
+    bool shouldPromptOnClose() const { return isDirty(); }
+
+    // A fresh untitled document over `sources` (empty = the sample scene).
+    void newDocument(std::vector<std::filesystem::path> sources);
+    // Saves to `path` (becomes the project path), marks clean, removes the autosave.
+    void save(const QString& path);
+    // Opens `path` (or its autosave when `fromAutosave`; the result is then dirty).
+    void open(const QString& path, bool fromAutosave = false);
+    // Whether `path` has an autosave newer than itself (an offer to recover).
+    static bool hasNewerAutosave(const QString& path);
+    // Writes the autosave now when dirty and titled; true when one was written.
+    bool autosave();
+    QTimer* autosaveTimer() const { return timer_; }
+
+    // True while newDocument/open replace the content (documentChanged then does not come
+    // from an edit of the open scene's project).
+    bool replacing() const { return replacing_; }
+
+    // The build settings the document's Cluster and Bake parameters and hand edits give.
+    HlodSettings settings() const;
+
+Q_SIGNALS:
+    void dirtyChanged(bool dirty);
+    void projectChanged();  // new document, open, or a save under a new path
+    void documentChanged(); // any content change (command, undo, redo, replace)
+
+private:
+    void replace(Document doc, const QString& path, bool recovered);
+    void updateDirty();
+
+    std::unique_ptr<Document> doc_;
+    std::unique_ptr<UndoAdapter> undo_;
+    QString path_;
+    bool recovered_ = false;
+    bool lastDirty_ = false;
+    bool replacing_ = false;
+    QTimer* timer_ = nullptr;
+};
+
+// The HlodSettings of a document: its first Cluster and Bake nodes' parameters with the hand
+// edits' locked groups and exclusions applied.
+HlodSettings settingsOf(const Document& doc);
+
+} // namespace hlod::widgets
