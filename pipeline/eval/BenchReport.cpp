@@ -1,5 +1,7 @@
 #include "pipeline/eval/BenchReport.h"
 
+#include "pipeline/core/AtomicFile.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -152,24 +154,7 @@ std::string tablesMarkdown(const std::string& title, const std::vector<GeometryS
 }
 
 void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw Error(ErrorCode::Io, path, "cannot write file");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error(ErrorCode::Io, path, "cannot write file");
-    }
+    writeFileAtomic(path, text);
 }
 
 } // namespace hlod

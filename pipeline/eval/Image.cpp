@@ -1,5 +1,7 @@
 #include "pipeline/eval/Image.h"
 
+#include "pipeline/core/AtomicFile.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -173,25 +175,8 @@ void writePng(const std::filesystem::path& path, const RgbImage& image) {
     if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, 3,
                                 image.pixels.data(), image.width * 3))
         throw Error(ErrorCode::Io, path, "PNG encoding failed");
-    std::filesystem::path tmp = path;
-    tmp += ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        f.write(reinterpret_cast<const char*>(bytes.data()),
-                static_cast<std::streamsize>(bytes.size()));
-        f.close();
-        if (!f) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw Error(ErrorCode::Io, path, "cannot write file");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw Error(ErrorCode::Io, path, "cannot write file");
-    }
+    writeFileAtomic(path,
+                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace hlod

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -217,28 +218,8 @@ std::vector<std::uint8_t> encodeGlb(const GlbMesh& mesh) {
 
 void writeGlbFile(const std::filesystem::path& file, const GlbMesh& mesh) {
     const std::vector<std::uint8_t> bytes = encodeGlb(mesh);
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path tmp = file;
-    tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw Error(ErrorCode::Io, file, "cannot write GLB file");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw Error(ErrorCode::Io, file, "cannot move GLB file into place: " + ec.message());
-    }
+    writeFileAtomic(file,
+                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace hlod
