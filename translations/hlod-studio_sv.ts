@@ -4,7 +4,7 @@
 <context>
     <name>GlSupport</name>
     <message>
-        <source>OpenGL 3.2 is not available, so the 3D view cannot be shown. Use the hlod command-line tool for headless work, or run the editor on a machine with an OpenGL 3.2 driver (Mesa&apos;s llvmpipe is enough).</source>
+        <source>OpenGL 3.2 is not available, so the 3D view cannot be shown. Use the hlod command-line tool for headless work, or run the editor on a machine with an OpenGL 3.2 driver (Mesa's llvmpipe is enough).</source>
         <translation>OpenGL 3.2 är inte tillgängligt, så 3D-vyn kan inte visas. Använd kommandoradsverktyget hlod för arbete utan grafik, eller kör redigeraren på en dator med en OpenGL 3.2-drivrutin (Mesas llvmpipe räcker).</translation>
     </message>
     <message>
@@ -194,6 +194,186 @@
         <source>merged by opacity</source>
         <translation>sammanslaget efter opacitet</translation>
     </message>
+    <message>
+        <source>%1 (%2) — %3</source>
+        <translation>%1 (%2) — %3</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parametrar</translation>
+    </message>
+    <message>
+        <source>&lt;opened&gt;</source>
+        <translation>&lt;öppnad&gt;</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historik</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Redigera</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Ångra</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Gör om</translation>
+    </message>
+    <message>
+        <source>&amp;Clusters</source>
+        <translation>&amp;Kluster</translation>
+    </message>
+    <message>
+        <source>Clusters</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Statistics</source>
+        <translation>Statistik</translation>
+    </message>
+    <message>
+        <source>&amp;Build</source>
+        <translation>&amp;Bygg</translation>
+    </message>
+    <message>
+        <source>&amp;Build HLOD</source>
+        <translation>&amp;Bygg HLOD</translation>
+    </message>
+    <message>
+        <source>Cluster the scene and bake the proxies with the parameters of the Parameters dock, in the background</source>
+        <translation>Klustra scenen och baka proxyerna med parametrarna i parameterpanelen, i bakgrunden</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel Build</source>
+        <translation>&amp;Avbryt bygget</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Stop the running build; the previous HLOD stays</source>
+        <translation>Stoppa det pågående bygget; föregående HLOD finns kvar</translation>
+    </message>
+    <message>
+        <source>%1, %2 proxies, S = %3 px</source>
+        <translation>%1, %2-proxyer, S = %3 px</translation>
+    </message>
+    <message>
+        <source>Building HLOD…</source>
+        <translation>Bygger HLOD…</translation>
+    </message>
+    <message>
+        <source>Building the HLOD (%1)</source>
+        <translation>Bygger HLOD (%1)</translation>
+    </message>
+    <message>
+        <source>Clustering</source>
+        <translation>Klustring</translation>
+    </message>
+    <message>
+        <source>Baking proxies</source>
+        <translation>Bakar proxyer</translation>
+    </message>
+    <message>
+        <source>%1 %2/%3</source>
+        <translation>%1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, bake %5 s: %6 baked, %7 reused)</source>
+        <translation>HLOD byggd: %1 noder, höjd %2, %3 proxytrianglar (klustring %4 s, bakning %5 s: %6 bakade, %7 återanvända)</translation>
+    </message>
+    <message>
+        <source>Could not build the HLOD</source>
+        <translation>Kunde inte bygga HLOD</translation>
+    </message>
+    <message>
+        <source>HLOD build cancelled; the previous result stays</source>
+        <translation>HLOD-bygget avbröts; föregående resultat finns kvar</translation>
+    </message>
+    <message>
+        <source>the build was cancelled</source>
+        <translation>bygget avbröts</translation>
+    </message>
+    <message>
+        <source>HLOD projects (*%1)</source>
+        <translation>HLOD-projekt (*%1)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Project…</source>
+        <translation>Öppna &amp;projekt…</translation>
+    </message>
+    <message>
+        <source>Open a .hlodproj project: its scene, parameters and hand edits</source>
+        <translation>Öppna ett .hlodproj-projekt: dess scen, parametrar och handredigeringar</translation>
+    </message>
+    <message>
+        <source>&amp;Save Project</source>
+        <translation>&amp;Spara projekt</translation>
+    </message>
+    <message>
+        <source>Save Project &amp;As…</source>
+        <translation>Spara projekt &amp;som…</translation>
+    </message>
+    <message>
+        <source>&amp;Export Package…</source>
+        <translation>&amp;Exportera paket…</translation>
+    </message>
+    <message>
+        <source>Write the current HLOD as a 3D Tiles package</source>
+        <translation>Skriv aktuell HLOD som ett 3D Tiles-paket</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Öppna projekt</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>Återställ projekt</translation>
+    </message>
+    <message>
+        <source>%1 has an autosave newer than the project (the editor may have stopped before saving). Recover the autosaved changes?</source>
+        <translation>%1 har en automatisk sparning som är nyare än projektet (redigeraren kan ha stoppats innan den sparade). Återställa de automatiskt sparade ändringarna?</translation>
+    </message>
+    <message>
+        <source>Could not open the project</source>
+        <translation>Kunde inte öppna projektet</translation>
+    </message>
+    <message>
+        <source>Recovered %1 from its autosave</source>
+        <translation>Återställde %1 från dess automatiska sparning</translation>
+    </message>
+    <message>
+        <source>Opened project %1</source>
+        <translation>Öppnade projektet %1</translation>
+    </message>
+    <message>
+        <source>Could not save the project</source>
+        <translation>Kunde inte spara projektet</translation>
+    </message>
+    <message>
+        <source>Saved project %1</source>
+        <translation>Sparade projektet %1</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Spara projekt som</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Osparade ändringar</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 har osparade ändringar. Spara dem?</translation>
+    </message>
+    <message>
+        <source>Exported the package to %1 (%2 files)</source>
+        <translation>Exporterade paketet till %1 (%2 filer)</translation>
+    </message>
 </context>
 <context>
     <name>RecentScenes</name>
@@ -206,6 +386,314 @@
     </message>
 </context>
 <context>
+    <name>hlod::widgets::BuildPanel</name>
+    <message>
+        <source>Bounding volume of the clustering: spheres (Sappa &amp; Garcia), AABBs with the proportion constraint k, a loose octree, or the scene's own hierarchy</source>
+        <translation>Klustringens omslutande volym: sfärer (Sappa &amp; Garcia), AABB med proportionsvillkoret k, ett löst oktträd eller scenens egen hierarki</translation>
+    </message>
+    <message>
+        <source>AABB proportion constraint: cost × (max extent / min extent)^k</source>
+        <translation>AABB-proportionsvillkor: kostnad × (största utsträckning / minsta utsträckning)^k</translation>
+    </message>
+    <message>
+        <source>Most children an inner node may have</source>
+        <translation>Högsta antal barn en inre nod får ha</translation>
+    </message>
+    <message>
+        <source>How inner nodes get their proxies: quadric decimation, voxel remesh (watertight shell) or sloppy aggregate</source>
+        <translation>Hur inre noder får sina proxyer: kvadrisk decimering, voxelomnätning (vattentätt skal) eller grovt aggregat</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>S: a node is drawn once its bounding sphere projects to at most this many pixels</source>
+        <translation>S: en nod ritas när dess omslutande sfär projiceras på högst så här många pixlar</translation>
+    </message>
+    <message>
+        <source>How far a proxy may deviate on screen at its switch point</source>
+        <translation>Hur mycket en proxy får avvika på skärmen vid sin växlingspunkt</translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation>Volym</translation>
+    </message>
+    <message>
+        <source>k</source>
+        <translation>k</translation>
+    </message>
+    <message>
+        <source>Max children</source>
+        <translation>Max antal barn</translation>
+    </message>
+    <message>
+        <source>Proxy</source>
+        <translation>Proxy</translation>
+    </message>
+    <message>
+        <source>Screen size S</source>
+        <translation>Skärmstorlek S</translation>
+    </message>
+    <message>
+        <source>Pixel error</source>
+        <translation>Pixelfel</translation>
+    </message>
+    <message>
+        <source>Build HLOD</source>
+        <translation>Bygg HLOD</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::BuildParameters</name>
+    <message>
+        <source>Clustering</source>
+        <translation>Klustring</translation>
+    </message>
+    <message>
+        <source>Proxies</source>
+        <translation>Proxyer</translation>
+    </message>
+    <message>
+        <source>Build HLOD</source>
+        <translation>Bygg HLOD</translation>
+    </message>
+    <message>
+        <source>Cluster the scene and bake the proxies with these parameters</source>
+        <translation>Klustra scenen och baka proxyerna med dessa parametrar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::ClusterEditActions</name>
+    <message>
+        <source>&amp;Merge Clusters</source>
+        <translation>&amp;Slå ihop kluster</translation>
+    </message>
+    <message>
+        <source>Make the selected clusters one locked cluster, then rebuild</source>
+        <translation>Gör de valda klustren till ett låst kluster och bygg om</translation>
+    </message>
+    <message>
+        <source>&amp;Lock Cluster</source>
+        <translation>&amp;Lås kluster</translation>
+    </message>
+    <message>
+        <source>Keep the selected clusters whole when clustering reruns</source>
+        <translation>Håll de valda klustren hela när klustringen körs om</translation>
+    </message>
+    <message>
+        <source>&amp;Unlock Cluster</source>
+        <translation>&amp;Lås upp kluster</translation>
+    </message>
+    <message>
+        <source>&amp;Exclude from HLOD</source>
+        <translation>&amp;Undanta från HLOD</translation>
+    </message>
+    <message>
+        <source>Hang the selected meshes directly from the root, never merged</source>
+        <translation>Häng de valda näten direkt under roten, aldrig sammanslagna</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::ClusterTreeModel</name>
+    <message>
+        <source>Cluster %1</source>
+        <translation>Kluster %1</translation>
+    </message>
+    <message>
+        <source>Instance %1</source>
+        <translation>Instans %1</translation>
+    </message>
+    <message>
+        <source>Leaf %1: instance %2</source>
+        <translation>Löv %1: instans %2</translation>
+    </message>
+    <message>
+        <source>Cluster %1: %2 children, fill %3, cost %4</source>
+        <translation>Kluster %1: %2 barn, fyllnad %3, kostnad %4</translation>
+    </message>
+    <message>
+        <source>Volume of the node's bounding sphere (sphere trees) or box, in m³</source>
+        <translation>Volym för nodens omslutande sfär (sfärträd) eller låda, i m³</translation>
+    </message>
+    <message>
+        <source>Cluster</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Trianglar</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Nivå</translation>
+    </message>
+    <message>
+        <source>Volume (m³)</source>
+        <translation>Volym (m³)</translation>
+    </message>
+    <message>
+        <source>Proxy triangles</source>
+        <translation>Proxytrianglar</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::DisplayController</name>
+    <message>
+        <source>Level %1 of %2: %3 clusters</source>
+        <translation>Nivå %1 av %2: %3 kluster</translation>
+    </message>
+    <message>
+        <source>Draw calls: %1
+Triangles: %2
+Nodes visited: %3</source>
+        <translation>Ritanrop: %1
+Trianglar: %2
+Besökta noder: %3</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::DisplayToolBar</name>
+    <message>
+        <source>Display</source>
+        <translation>Visning</translation>
+    </message>
+    <message>
+        <source>Original</source>
+        <translation>Original</translation>
+    </message>
+    <message>
+        <source>Show the original scene</source>
+        <translation>Visa originalscenen</translation>
+    </message>
+    <message>
+        <source>Clusters</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Colour the meshes by their cluster at the chosen level</source>
+        <translation>Färga näten efter deras kluster på vald nivå</translation>
+    </message>
+    <message>
+        <source>HLOD preview</source>
+        <translation>HLOD-förhandsvisning</translation>
+    </message>
+    <message>
+        <source>Draw what an engine draws for this camera: proxies and leaves</source>
+        <translation>Rita det en motor ritar för den här kameran: proxyer och löv</translation>
+    </message>
+    <message>
+        <source> Level </source>
+        <translation> Nivå </translation>
+    </message>
+    <message>
+        <source>Cluster level shown in Clusters mode (0 = single meshes)</source>
+        <translation>Klusternivå som visas i klusterläget (0 = enskilda nät)</translation>
+    </message>
+    <message>
+        <source>No bounds</source>
+        <translation>Inga volymer</translation>
+    </message>
+    <message>
+        <source>Spheres</source>
+        <translation>Sfärer</translation>
+    </message>
+    <message>
+        <source>Boxes</source>
+        <translation>Lådor</translation>
+    </message>
+    <message>
+        <source>Bounding volumes drawn as wireframes in Clusters mode</source>
+        <translation>Omslutande volymer ritade som trådmodeller i klusterläget</translation>
+    </message>
+    <message>
+        <source>Selected only</source>
+        <translation>Endast valda</translation>
+    </message>
+    <message>
+        <source>Draw the bounds of the selected cluster's subtree only</source>
+        <translation>Rita bara volymerna för det valda klustrets delträd</translation>
+    </message>
+    <message>
+        <source>Tint by depth</source>
+        <translation>Tona efter djup</translation>
+    </message>
+    <message>
+        <source>HLOD preview: colour every drawn node by its depth in the tree</source>
+        <translation>HLOD-förhandsvisning: färga varje ritad nod efter dess djup i trädet</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::ExportDialog</name>
+    <message>
+        <source>Export Package</source>
+        <translation>Exportera paket</translation>
+    </message>
+    <message>
+        <source>The package folder: tileset.json, tiles/*.glb and hlod.json</source>
+        <translation>Paketmappen: tileset.json, tiles/*.glb och hlod.json</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Bläddra…</translation>
+    </message>
+    <message>
+        <source>Include the DLOD chain statistics (slower)</source>
+        <translation>Ta med statistik för DLOD-kedjan (långsammare)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation>Mapp:</translation>
+    </message>
+    <message>
+        <source>Export cancelled; nothing was written</source>
+        <translation>Exporten avbröts; inget skrevs</translation>
+    </message>
+    <message>
+        <source>Export Package To</source>
+        <translation>Exportera paket till</translation>
+    </message>
+    <message>
+        <source>Choose a folder for the package</source>
+        <translation>Välj en mapp för paketet</translation>
+    </message>
+    <message>
+        <source>Exporting…</source>
+        <translation>Exporterar…</translation>
+    </message>
+    <message>
+        <source>%1 %2/%3</source>
+        <translation>%1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Wrote %1 files (%2) to %3</source>
+        <translation>Skrev %1 filer (%2) till %3</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::HlodBuilder</name>
+    <message>
+        <source>Not enough memory to build the HLOD of this scene</source>
+        <translation>Inte tillräckligt med minne för att bygga HLOD för den här scenen</translation>
+    </message>
+    <message>
+        <source>Unexpected error while building the HLOD</source>
+        <translation>Oväntat fel när HLOD byggdes</translation>
+    </message>
+</context>
+<context>
     <name>hlod::widgets::LogView</name>
     <message>
         <source>Warning: </source>
@@ -214,6 +702,13 @@
     <message>
         <source>Error: </source>
         <translation>Fel: </translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::ProjectSession</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Namnlös</translation>
     </message>
 </context>
 <context>
@@ -251,6 +746,52 @@
     </message>
 </context>
 <context>
+    <name>hlod::widgets::StatsPanel</name>
+    <message>
+        <source>Triangles</source>
+        <translation>Trianglar</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Hörn</translation>
+    </message>
+    <message>
+        <source>Meshes</source>
+        <translation>Nät</translation>
+    </message>
+    <message>
+        <source>MB</source>
+        <translation>MB</translation>
+    </message>
+    <message>
+        <source>Original</source>
+        <translation>Original</translation>
+    </message>
+    <message>
+        <source>HLOD</source>
+        <translation>HLOD</translation>
+    </message>
+    <message>
+        <source>%1 nodes, height %2; %3 proxies baked, %4 reused; built in %5 s</source>
+        <translation>%1 noder, höjd %2; %3 proxyer bakade, %4 återanvända; byggd på %5 s</translation>
+    </message>
+    <message>
+        <source>Build the HLOD (Build ▸ Build HLOD, Ctrl+B) to compare.</source>
+        <translation>Bygg HLOD (Bygg ▸ Bygg HLOD, Ctrl+B) för att jämföra.</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::StatsPlot</name>
+    <message>
+        <source>draw calls %1</source>
+        <translation>ritanrop %1</translation>
+    </message>
+    <message>
+        <source>triangles %1</source>
+        <translation>trianglar %1</translation>
+    </message>
+</context>
+<context>
     <name>hlod::widgets::Viewport</name>
     <message>
         <source>This widget received an OpenGL %1.%2 context.</source>
@@ -280,16 +821,40 @@
         <translation>Fönsterstorlek i bildpunkter.</translation>
     </message>
     <message>
-        <source>--size wants WIDTHxHEIGHT, at least 200x150, not &quot;%1&quot;</source>
-        <translation>--size vill ha BREDDxHÖJD, minst 200x150, inte &quot;%1&quot;</translation>
+        <source>--size wants WIDTHxHEIGHT, at least 200x150, not "%1"</source>
+        <translation>--size vill ha BREDDxHÖJD, minst 200x150, inte "%1"</translation>
     </message>
     <message>
         <source>Turn the initial view by AZ degrees around the up axis and tilt it by EL degrees, then fit.</source>
         <translation>Vrid startvyn AZ grader runt uppåtaxeln och luta den EL grader, och anpassa den sedan.</translation>
     </message>
     <message>
-        <source>--orbit wants two angles in degrees, AZ,EL, not &quot;%1&quot;</source>
-        <translation>--orbit vill ha två vinklar i grader, AZ,EL, inte &quot;%1&quot;</translation>
+        <source>--orbit wants two angles in degrees, AZ,EL, not "%1"</source>
+        <translation>--orbit vill ha två vinklar i grader, AZ,EL, inte "%1"</translation>
+    </message>
+    <message>
+        <source>--mode wants original, clusters or hlod, not "%1"</source>
+        <translation>--mode vill ha original, clusters eller hlod, inte "%1"</translation>
+    </message>
+    <message>
+        <source>--level wants a cluster level (0 or more), not "%1"</source>
+        <translation>--level vill ha en klusternivå (0 eller mer), inte "%1"</translation>
+    </message>
+    <message>
+        <source>Build the HLOD once the scene is loaded.</source>
+        <translation>Bygg HLOD när scenen har laddats.</translation>
+    </message>
+    <message>
+        <source>Display mode: original, clusters or hlod (the last two build the HLOD first).</source>
+        <translation>Visningsläge: original, clusters eller hlod (de två sista bygger HLOD först).</translation>
+    </message>
+    <message>
+        <source>Cluster level shown in clusters mode.</source>
+        <translation>Klusternivå som visas i klusterläget.</translation>
+    </message>
+    <message>
+        <source>HLOD preview: tint drawn nodes by tree depth.</source>
+        <translation>HLOD-förhandsvisning: tona ritade noder efter träddjup.</translation>
     </message>
 </context>
 </TS>
