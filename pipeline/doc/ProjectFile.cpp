@@ -2,9 +2,9 @@
 #include "pipeline/doc/ProjectFile.h"
 
 #include <fstream>
-#include <random>
 #include <sstream>
 
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 
 namespace fs = std::filesystem;
@@ -66,31 +66,6 @@ Document readProject(const fs::path& file, const fs::path& anchor) {
 
 } // namespace
 
-void writeFileAtomically(const fs::path& file, const std::string& text) {
-    std::random_device rd;
-    const fs::path tmp =
-        file.parent_path() / ("." + file.filename().string() + ".tmp-" + std::to_string(rd()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error(ErrorCode::Io, file, "cannot be written (temporary file failed)");
-        out << text;
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ec;
-            fs::remove(tmp, ec);
-            throw Error(ErrorCode::Io, file, "cannot be written");
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, file, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
-        throw Error(ErrorCode::Io, file, "cannot be replaced: " + ec.message());
-    }
-}
-
 nlohmann::json projectJson(const Document& doc, const fs::path& projectFile) {
     const fs::path folder = projectFolder(projectFile);
     nlohmann::json graph = doc.graph().toJson();
@@ -137,7 +112,7 @@ Document projectFromJson(const nlohmann::json& j, const fs::path& projectFile) {
 }
 
 void saveProject(const Document& doc, const fs::path& file) {
-    writeFileAtomically(file, projectJson(doc, file).dump(2) + "\n");
+    writeFileAtomic(file, projectJson(doc, file).dump(2) + "\n");
 }
 
 Document openProject(const fs::path& file) { return readProject(file, {}); }
@@ -149,7 +124,7 @@ fs::path autosavePath(const fs::path& projectFile) {
 }
 
 void writeAutosave(const Document& doc, const fs::path& projectFile) {
-    writeFileAtomically(autosavePath(projectFile), projectJson(doc, projectFile).dump(2) + "\n");
+    writeFileAtomic(autosavePath(projectFile), projectJson(doc, projectFile).dump(2) + "\n");
 }
 
 bool autosaveIsNewer(const fs::path& projectFile) {

@@ -46,7 +46,4 @@ bool autosaveIsNewer(const std::filesystem::path& projectFile);
 Document openAutosave(const std::filesystem::path& projectFile);
 void removeAutosave(const std::filesystem::path& projectFile);
 
-// Writes `text` to `file` atomically (temporary sibling + rename); Error(Io) naming the file.
-void writeFileAtomically(const std::filesystem::path& file, const std::string& text);
-
 } // namespace hlod

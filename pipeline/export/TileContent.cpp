@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/io/TextureImage.h"
 
@@ -40,11 +41,8 @@ const std::string& TextureCache::uriFor(Id material) {
                              (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
     const std::filesystem::path file = tilesDir_ / name;
     std::filesystem::create_directories(file.parent_path());
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(image->bytes.data()),
-              static_cast<std::streamsize>(image->bytes.size()));
-    out.flush();
-    if (!out) throw Error(ErrorCode::Io, file, "cannot write texture");
+    writeFileAtomic(file, std::string_view(reinterpret_cast<const char*>(image->bytes.data()),
+                                           image->bytes.size()));
     bytes_ += image->bytes.size();
     ++files_;
     shared = name;

@@ -1,14 +1,10 @@
 // Content-addressed proxy files with atomic replace (write temp + rename), see ProxyCache.h.
 #include "pipeline/proxy/ProxyCache.h"
 
-#include <atomic>
 #include <cstring>
 #include <fstream>
-#include <functional>
-#include <thread>
 
-#include <unistd.h>
-
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/ContentHash.h"
 
@@ -54,16 +50,6 @@ private:
     const std::vector<std::uint8_t>& bytes_;
     std::size_t pos_ = 0;
 };
-
-std::filesystem::path uniqueTempName(const std::filesystem::path& target) {
-    static std::atomic<std::uint64_t> counter{0};
-    const std::uint64_t id =
-        hashBytes(nullptr, 0, std::hash<std::thread::id>{}(std::this_thread::get_id())) ^
-        (static_cast<std::uint64_t>(::getpid()) << 32) ^ counter.fetch_add(1);
-    std::filesystem::path tmp = target;
-    tmp += ".tmp-" + toHex(id);
-    return tmp;
-}
 
 } // namespace
 
@@ -140,24 +126,8 @@ void ProxyCache::store(std::uint64_t key, const ProxyMesh& mesh) const {
     std::filesystem::create_directories(folder_, ec);
     if (ec) throw Error(ErrorCode::Io, folder_, "cannot create cache folder: " + ec.message());
     const std::vector<std::uint8_t> bytes = encodeProxy(key, mesh);
-    const std::filesystem::path tmp = uniqueTempName(target);
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp, ec);
-            throw Error(ErrorCode::Io, tmp, "cannot write cache file");
-        }
-    }
-    std::filesystem::rename(tmp, target, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(tmp, ignored);
-        throw Error(ErrorCode::Io, target, "cannot move cache file into place: " + ec.message());
-    }
+    writeFileAtomic(target,
+                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 } // namespace hlod

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -267,17 +268,7 @@ void writeCameraPath(const std::filesystem::path& file, const CameraPath& path) 
                              {"eye", {k.eye.x, k.eye.y, k.eye.z}},
                              {"target", {k.target.x, k.target.y, k.target.z}}});
     }
-    std::filesystem::path tmp = file;
-    tmp += ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::trunc);
-        out << j.dump(2) << "\n";
-        out.close();
-        if (!out) throw Error(ErrorCode::Io, file, "cannot write file");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, file, ec);
-    if (ec) throw Error(ErrorCode::Io, file, "cannot write file");
+    writeFileAtomic(file, j.dump(2) + "\n");
 }
 
 std::vector<Camera> sampleCameraPath(const CameraPath& path, int frames, double fps, int width,

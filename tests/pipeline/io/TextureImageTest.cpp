@@ -36,6 +36,18 @@ std::vector<std::uint8_t> encodeBmp() {
     return out;
 }
 
+// The GLB of `m` as tinygltf reads it back (images decoded).
+tinygltf::Model encodeAndLoad(const GlbMesh& m) {
+    const std::vector<std::uint8_t> bytes = encodeGlb(m);
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    EXPECT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                            static_cast<unsigned>(bytes.size())))
+        << err;
+    return model;
+}
+
 } // namespace
 
 TEST(TextureImage, PngPassesThroughByteForByte) {
@@ -85,13 +97,7 @@ TEST(GlbWriter, EmbeddedTextureIsReferencedByTheMaterialAndDecodesBack) {
     m.indices = indices;
     m.image = png;
     m.imageMimeType = "image/png";
-    const std::vector<std::uint8_t> bytes = encodeGlb(m);
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string err, warn;
-    ASSERT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                            static_cast<unsigned>(bytes.size())))
-        << err;
+    const tinygltf::Model model = encodeAndLoad(m);
     ASSERT_EQ(model.images.size(), 1u);
     EXPECT_EQ(model.images[0].mimeType, "image/png");
     EXPECT_EQ(model.images[0].width, 2); // tinygltf decoded the embedded bytes
@@ -111,11 +117,6 @@ TEST(GlbWriter, ImageWithoutUvsIsLeftOut) {
     m.indices = indices;
     m.image = png;
     m.imageMimeType = "image/png";
-    const std::vector<std::uint8_t> bytes = encodeGlb(m);
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string err, warn;
-    ASSERT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                            static_cast<unsigned>(bytes.size())));
+    const tinygltf::Model model = encodeAndLoad(m);
     EXPECT_TRUE(model.images.empty()); // a texture nobody can sample would only cost bytes
 }
