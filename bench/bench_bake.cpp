@@ -4,7 +4,7 @@
 //
 // Scene: a deterministic grid of spheres, cylinders and boxes under a hand-built quadtree
 // (4 children per inner node), so the measurement does not depend on the clusterer.
-// Run: build-bake/bench/bench_bake --benchmark_min_time=2 (see docs/benchmarks.md, proxy baking).
+// Run: build/bench/bench_bake --benchmark_min_time=2 (see docs/benchmarks.md, proxy baking).
 #include <benchmark/benchmark.h>
 
 #include <glm/gtc/matrix_transform.hpp>
