@@ -3,7 +3,8 @@
 // BM_Cluster: buildClusterTree (instance bounds + level merging) on generated scenes of 1k to
 // 1M instances, uniform and clumped layouts, sphere and AABB (k = 1), on ONE thread (TBB
 // limited to 1) so the figures do not depend on the machine's core count.
-// BM_ClusterOctree: the loose octree baseline on the same scenes.
+// BM_Cluster with volume 2: the loose octree baseline on the same scenes.
+// BM_ClusterAabbK: the AABB clusterer for k = 0, 1, 2 on the same scenes.
 // BM_NaiveReference / BM_FastReference: the all-pairs reference of the tests
 // (tests/pipeline/cluster/NaiveClusterer.h) against the fast merger on 2k-5k instances, merge
 // stage only (bounds precomputed), for the speed ratio.
@@ -11,6 +12,7 @@
 // process, with --benchmark_filter, to read the memory of that size).
 #include <map>
 #include <memory>
+#include <string>
 #include <tuple>
 
 #include <benchmark/benchmark.h>
@@ -79,6 +81,32 @@ void clusterArgs(benchmark::internal::Benchmark* b) {
     }
 }
 BENCHMARK(BM_Cluster)->Apply(clusterArgs)->Unit(benchmark::kSecond)->Iterations(1);
+
+// BM_ClusterAabbK: the AABB clusterer with k = range(2) (0, 1 or 2, the thesis' values);
+// range(0) instances, range(1) layout as BM_Cluster.
+void BM_ClusterAabbK(benchmark::State& state) {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const Layout layout = state.range(1) ? Layout::Clumped : Layout::Uniform;
+    const hlod::Scene& s = scene(n, layout);
+    hlod::ClusterParams p;
+    p.volume = hlod::VolumeType::Aabb;
+    p.k = static_cast<double>(state.range(2));
+    std::size_t nodes = 0;
+    for (auto _ : state) {
+        const hlod::ClusterTree t = hlod::buildClusterTree(s, p);
+        nodes = t.nodes.size();
+        benchmark::DoNotOptimize(nodes);
+    }
+    state.counters["nodes"] = static_cast<double>(nodes);
+    state.counters["peakRssMiB"] = peakRssMiB();
+    state.SetLabel(std::string(layout == Layout::Clumped ? "clumped" : "uniform") +
+                   " aabb k=" + std::to_string(state.range(2)));
+}
+BENCHMARK(BM_ClusterAabbK)
+    ->ArgsProduct({{1000, 10000, 100000, 1000000}, {0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 // Leaves of `s` in a fresh builder, ready for a merger.
 std::pair<hlod::TreeBuilder, std::vector<hlod::Id>> leaves(const hlod::Scene& s,

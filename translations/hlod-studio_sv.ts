@@ -2,9 +2,52 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sv_SE">
 <context>
+    <name>CompareConfig</name>
+    <message>
+        <source>Sphere</source>
+        <translation>Sfär</translation>
+    </message>
+    <message>
+        <source>AABB k=%1</source>
+        <translation>AABB k=%1</translation>
+    </message>
+    <message>
+        <source>Octree</source>
+        <translation>Oktalträd</translation>
+    </message>
+    <message>
+        <source>Original hierarchy</source>
+        <translation>Ursprunglig hierarki</translation>
+    </message>
+    <message>
+        <source>%1, S = %2 px</source>
+        <translation>%1, S = %2 px</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a configuration: use sphere, aabb, aabb-kK, octree, original or current, optionally followed by @S (screen size in pixels)</source>
+        <translation>&quot;%1&quot; är ingen konfiguration: använd sphere, aabb, aabb-kK, octree, original eller current, eventuellt följt av @S (skärmstorlek i pixlar)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: k applies to aabb only</source>
+        <translation>&quot;%1&quot;: k gäller bara aabb</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: k must be within [%2, %3]</source>
+        <translation>&quot;%1&quot;: k måste ligga inom [%2, %3]</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the screen size must be within [%2, %3] px</source>
+        <translation>&quot;%1&quot;: skärmstorleken måste ligga inom [%2, %3] px</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a pair of configurations LEFT:RIGHT, e.g. sphere:aabb-k2</source>
+        <translation>&quot;%1&quot; är inget par av konfigurationer VÄNSTER:HÖGER, t.ex. sphere:aabb-k2</translation>
+    </message>
+</context>
+<context>
     <name>GlSupport</name>
     <message>
-        <source>OpenGL 3.2 is not available, so the 3D view cannot be shown. Use the hlod command-line tool for headless work, or run the editor on a machine with an OpenGL 3.2 driver (Mesa's llvmpipe is enough).</source>
+        <source>OpenGL 3.2 is not available, so the 3D view cannot be shown. Use the hlod command-line tool for headless work, or run the editor on a machine with an OpenGL 3.2 driver (Mesa&apos;s llvmpipe is enough).</source>
         <translation>OpenGL 3.2 är inte tillgängligt, så 3D-vyn kan inte visas. Använd kommandoradsverktyget hlod för arbete utan grafik, eller kör redigeraren på en dator med en OpenGL 3.2-drivrutin (Mesas llvmpipe räcker).</translation>
     </message>
     <message>
@@ -374,6 +417,42 @@
         <source>Exported the package to %1 (%2 files)</source>
         <translation>Exporterade paketet till %1 (%2 filer)</translation>
     </message>
+    <message>
+        <source>&amp;Compare Configurations…</source>
+        <translation>&amp;Jämför konfigurationer…</translation>
+    </message>
+    <message>
+        <source>Build two configurations of this scene (e.g. sphere and AABB k=2) and compare them side by side with linked cameras and statistics</source>
+        <translation>Bygg två konfigurationer av scenen (t.ex. sfär och AABB k=2) och jämför dem sida vid sida med länkade kameror och statistik</translation>
+    </message>
+    <message>
+        <source>The document now uses %1 (from the comparison)</source>
+        <translation>Dokumentet använder nu %1 (från jämförelsen)</translation>
+    </message>
+    <message>
+        <source>Comparison, %1 side: %2</source>
+        <translation>Jämförelse, %1 sida: %2</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>vänster</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>höger</translation>
+    </message>
+    <message>
+        <source>Compare Configurations — %1</source>
+        <translation>Jämför konfigurationer — %1</translation>
+    </message>
+    <message>
+        <source>Comparing %1 with %2</source>
+        <translation>Jämför %1 med %2</translation>
+    </message>
+    <message>
+        <source>Pipeline</source>
+        <translation>Pipeline</translation>
+    </message>
 </context>
 <context>
     <name>RecentScenes</name>
@@ -388,7 +467,7 @@
 <context>
     <name>hlod::widgets::BuildPanel</name>
     <message>
-        <source>Bounding volume of the clustering: spheres (Sappa &amp; Garcia), AABBs with the proportion constraint k, a loose octree, or the scene's own hierarchy</source>
+        <source>Bounding volume of the clustering: spheres (Sappa &amp; Garcia), AABBs with the proportion constraint k, a loose octree, or the scene&apos;s own hierarchy</source>
         <translation>Klustringens omslutande volym: sfärer (Sappa &amp; Garcia), AABB med proportionsvillkoret k, ett löst oktträd eller scenens egen hierarki</translation>
     </message>
     <message>
@@ -470,6 +549,26 @@
         <source>Cancel</source>
         <translation>Avbryt</translation>
     </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Cluster</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Bake</source>
+        <translation>Bakning</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::ClusterEditActions</name>
@@ -501,6 +600,26 @@
         <source>Hang the selected meshes directly from the root, never merged</source>
         <translation>Häng de valda näten direkt under roten, aldrig sammanslagna</translation>
     </message>
+    <message>
+        <source>&amp;Split Cluster</source>
+        <translation>&amp;Dela kluster</translation>
+    </message>
+    <message>
+        <source>Remove the selected cluster: its children hang from its parent</source>
+        <translation>Ta bort det markerade klustret: dess barn hänger från dess förälder</translation>
+    </message>
+    <message>
+        <source>Let clustering regroup the selected locked clusters</source>
+        <translation>Låt klustringen gruppera om de markerade låsta klustren</translation>
+    </message>
+    <message>
+        <source>&amp;Include in HLOD</source>
+        <translation>&amp;Ta med i HLOD</translation>
+    </message>
+    <message>
+        <source>Cluster the selected excluded meshes again</source>
+        <translation>Klustra de markerade uteslutna näten igen</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::ClusterTreeModel</name>
@@ -521,7 +640,7 @@
         <translation>Kluster %1: %2 barn, fyllnad %3, kostnad %4</translation>
     </message>
     <message>
-        <source>Volume of the node's bounding sphere (sphere trees) or box, in m³</source>
+        <source>Volume of the node&apos;s bounding sphere (sphere trees) or box, in m³</source>
         <translation>Volym för nodens omslutande sfär (sfärträd) eller låda, i m³</translation>
     </message>
     <message>
@@ -543,6 +662,211 @@
     <message>
         <source>Proxy triangles</source>
         <translation>Proxytrianglar</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::ComparePane</name>
+    <message>
+        <source>Sphere</source>
+        <translation>Sfär</translation>
+    </message>
+    <message>
+        <source>AABB</source>
+        <translation>AABB</translation>
+    </message>
+    <message>
+        <source>Octree</source>
+        <translation>Oktalträd</translation>
+    </message>
+    <message>
+        <source>Original hierarchy</source>
+        <translation>Ursprunglig hierarki</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Use These Settings</source>
+        <translation>Använd dessa inställningar</translation>
+    </message>
+    <message>
+        <source>Set the document&apos;s volume, k and screen size to this side&apos;s values (one step in Edit ▸ Undo)</source>
+        <translation>Sätt dokumentets volym, k och skärmstorlek till den här sidans värden (ett steg i Redigera ▸ Ångra)</translation>
+    </message>
+    <message>
+        <source>Volume</source>
+        <translation>Volym</translation>
+    </message>
+    <message>
+        <source>k</source>
+        <translation>k</translation>
+    </message>
+    <message>
+        <source>Screen size</source>
+        <translation>Skärmstorlek</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Avbryt</translation>
+    </message>
+    <message>
+        <source>Stop this side&apos;s build</source>
+        <translation>Stoppa den här sidans bygge</translation>
+    </message>
+    <message>
+        <source>Build failed: %1</source>
+        <translation>Bygget misslyckades: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Avbrutet</translation>
+    </message>
+    <message>
+        <source>No scene</source>
+        <translation>Ingen scen</translation>
+    </message>
+    <message>
+        <source>Not built</source>
+        <translation>Inte byggd</translation>
+    </message>
+    <message>
+        <source>Building %1…</source>
+        <translation>Bygger %1…</translation>
+    </message>
+    <message>
+        <source>Clustering</source>
+        <translation>Klustring</translation>
+    </message>
+    <message>
+        <source>Baking proxies</source>
+        <translation>Bakar proxyer</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3/%4</source>
+        <translation>%1: %2 %3/%4</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 nodes, height %2; built in %3 s (%4 proxies baked, %5 from the cache)</source>
+        <translation>%1 noder, höjd %2; byggd på %3 s (%4 proxyer bakade, %5 från cachen)</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::CompareTable</name>
+    <message>
+        <source>Left</source>
+        <translation>Vänster</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Höger</translation>
+    </message>
+    <message>
+        <source>Draw calls (now)</source>
+        <translation>Ritanrop (nu)</translation>
+    </message>
+    <message>
+        <source>Triangles (now)</source>
+        <translation>Trianglar (nu)</translation>
+    </message>
+    <message>
+        <source>Tree nodes</source>
+        <translation>Trädnoder</translation>
+    </message>
+    <message>
+        <source>Proxy triangles</source>
+        <translation>Proxytrianglar</translation>
+    </message>
+    <message>
+        <source>Package size (geometry, est.)</source>
+        <translation>Paketstorlek (geometri, uppsk.)</translation>
+    </message>
+    <message>
+        <source>Draw calls of the current frame for the linked camera (HLOD preview)</source>
+        <translation>Ritanrop i den aktuella bilden för den länkade kameran (HLOD-förhandsvisning)</translation>
+    </message>
+    <message>
+        <source>Triangles drawn in the current frame for the linked camera</source>
+        <translation>Trianglar som ritas i den aktuella bilden för den länkade kameran</translation>
+    </message>
+    <message>
+        <source>Nodes of the cluster tree: leaves (one per mesh instance) and clusters</source>
+        <translation>Klusterträdets noder: löv (ett per nätinstans) och kluster</translation>
+    </message>
+    <message>
+        <source>Triangles of all proxies of the inner nodes together</source>
+        <translation>Trianglar i alla de inre nodernas proxyer tillsammans</translation>
+    </message>
+    <message>
+        <source>Geometry of the package&apos;s tiles as the exporter stores it (original meshes of the leaves and the proxies); tileset.json, hlod.json, GLB headers and textures come on top, so the folder is somewhat larger</source>
+        <translation>Geometrin i paketets tiles som exporten lagrar den (lövens ursprungliga nät och proxyerna); tileset.json, hlod.json, GLB-huvuden och texturer tillkommer, så mappen blir något större</translation>
+    </message>
+    <message>
+        <source>Lower is better.</source>
+        <translation>Lägre är bättre.</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 byte</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::CompareView</name>
+    <message>
+        <source>Left</source>
+        <translation>Vänster</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Höger</translation>
+    </message>
+    <message>
+        <source>Link cameras</source>
+        <translation>Länka kameror</translation>
+    </message>
+    <message>
+        <source>Orbiting, panning or zooming one side moves the other the same way</source>
+        <translation>Att rotera, panorera eller zooma den ena sidan flyttar den andra på samma sätt</translation>
+    </message>
+    <message>
+        <source>Fit View</source>
+        <translation>Anpassa vy</translation>
+    </message>
+    <message>
+        <source>Show the whole scene in both views (F)</source>
+        <translation>Visa hela scenen i båda vyerna (F)</translation>
+    </message>
+    <message>
+        <source>Rebuild Both</source>
+        <translation>Bygg om båda</translation>
+    </message>
+    <message>
+        <source>Build both sides again with the document&apos;s current settings</source>
+        <translation>Bygg båda sidorna igen med dokumentets aktuella inställningar</translation>
+    </message>
+    <message>
+        <source>Compare Configurations</source>
+        <translation>Jämför konfigurationer</translation>
+    </message>
+    <message>
+        <source>The document already uses %1.</source>
+        <translation>Dokumentet använder redan %1.</translation>
+    </message>
+    <message>
+        <source>The document now uses %1 (Edit ▸ Undo takes it back).</source>
+        <translation>Dokumentet använder nu %1 (Redigera ▸ Ångra tar tillbaka det).</translation>
+    </message>
+    <message>
+        <source>Left: %1</source>
+        <translation>Vänster: %1</translation>
+    </message>
+    <message>
+        <source>Right: %1</source>
+        <translation>Höger: %1</translation>
     </message>
 </context>
 <context>
@@ -619,7 +943,7 @@ Besökta noder: %3</translation>
         <translation>Endast valda</translation>
     </message>
     <message>
-        <source>Draw the bounds of the selected cluster's subtree only</source>
+        <source>Draw the bounds of the selected cluster&apos;s subtree only</source>
         <translation>Rita bara volymerna för det valda klustrets delträd</translation>
     </message>
     <message>
@@ -702,6 +1026,88 @@ Besökta noder: %3</translation>
     <message>
         <source>Error: </source>
         <translation>Fel: </translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::NodeGraphView</name>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Cluster</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Bake</source>
+        <translation>Bakning</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>up to date</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <source>pending</source>
+        <translation>väntar</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>kör</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>misslyckades</translation>
+    </message>
+    <message>
+        <source>&amp;Remove %1</source>
+        <translation>&amp;Ta bort %1</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Koppla från</translation>
+    </message>
+    <message>
+        <source>Add %1 Node</source>
+        <translation>Lägg till %1-nod</translation>
+    </message>
+</context>
+<context>
+    <name>hlod::widgets::PipelineEditor</name>
+    <message>
+        <source>Add Node</source>
+        <translation>Lägg till nod</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Import</translation>
+    </message>
+    <message>
+        <source>Cluster</source>
+        <translation>Kluster</translation>
+    </message>
+    <message>
+        <source>Bake</source>
+        <translation>Bakning</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportera</translation>
+    </message>
+    <message>
+        <source>Click a node: its parameters · drag output to input: connect · right-click: add, remove, disconnect</source>
+        <translation>Klicka på en nod: dess parametrar · dra utgång till ingång: koppla · högerklick: lägg till, ta bort, koppla från</translation>
+    </message>
+    <message>
+        <source>Runs on File ▸ Export Package</source>
+        <translation>Körs vid Arkiv ▸ Exportera paket</translation>
+    </message>
+    <message>
+        <source>The pipeline needs a %1 node: add another one before removing this one</source>
+        <translation>Pipelinen behöver en %1-nod: lägg till en till innan du tar bort den här</translation>
     </message>
 </context>
 <context>
@@ -821,24 +1227,24 @@ Besökta noder: %3</translation>
         <translation>Fönsterstorlek i bildpunkter.</translation>
     </message>
     <message>
-        <source>--size wants WIDTHxHEIGHT, at least 200x150, not "%1"</source>
-        <translation>--size vill ha BREDDxHÖJD, minst 200x150, inte "%1"</translation>
+        <source>--size wants WIDTHxHEIGHT, at least 200x150, not &quot;%1&quot;</source>
+        <translation>--size vill ha BREDDxHÖJD, minst 200x150, inte &quot;%1&quot;</translation>
     </message>
     <message>
         <source>Turn the initial view by AZ degrees around the up axis and tilt it by EL degrees, then fit.</source>
         <translation>Vrid startvyn AZ grader runt uppåtaxeln och luta den EL grader, och anpassa den sedan.</translation>
     </message>
     <message>
-        <source>--orbit wants two angles in degrees, AZ,EL, not "%1"</source>
-        <translation>--orbit vill ha två vinklar i grader, AZ,EL, inte "%1"</translation>
+        <source>--orbit wants two angles in degrees, AZ,EL, not &quot;%1&quot;</source>
+        <translation>--orbit vill ha två vinklar i grader, AZ,EL, inte &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>--mode wants original, clusters or hlod, not "%1"</source>
-        <translation>--mode vill ha original, clusters eller hlod, inte "%1"</translation>
+        <source>--mode wants original, clusters or hlod, not &quot;%1&quot;</source>
+        <translation>--mode vill ha original, clusters eller hlod, inte &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>--level wants a cluster level (0 or more), not "%1"</source>
-        <translation>--level vill ha en klusternivå (0 eller mer), inte "%1"</translation>
+        <source>--level wants a cluster level (0 or more), not &quot;%1&quot;</source>
+        <translation>--level vill ha en klusternivå (0 eller mer), inte &quot;%1&quot;</translation>
     </message>
     <message>
         <source>Build the HLOD once the scene is loaded.</source>
@@ -855,6 +1261,10 @@ Besökta noder: %3</translation>
     <message>
         <source>HLOD preview: tint drawn nodes by tree depth.</source>
         <translation>HLOD-förhandsvisning: tona ritade noder efter träddjup.</translation>
+    </message>
+    <message>
+        <source>Compare two configurations side by side, e.g. sphere:aabb-k2 (also octree, original, current, @S for the screen size).</source>
+        <translation>Jämför två konfigurationer sida vid sida, t.ex. sphere:aabb-k2 (även octree, original, current, @S för skärmstorleken).</translation>
     </message>
 </context>
 </TS>

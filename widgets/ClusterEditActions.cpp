@@ -1,4 +1,4 @@
-// Cluster hand edits from the Clusters tab (see ClusterEditActions.h).
+// Cluster hand edits from the Clusters tab and the viewport (see ClusterEditActions.h).
 #include "widgets/ClusterEditActions.h"
 
 #include <algorithm>
@@ -10,95 +10,241 @@
 
 #include "pipeline/doc/Commands.h"
 #include "widgets/ClusterTreeModel.h"
+#include "widgets/DisplayController.h"
 #include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
 #include "widgets/doc/ProjectSession.h"
+#include "widgets/doc/SplitClusterOfTree.h"
 
 namespace hlod::widgets {
 
-ClusterEditActions::ClusterEditActions(ProjectSession* session, StudioModel* model, QTreeView* tree,
-                                       ClusterTreeModel* treeModel, QObject* parent)
-    : QObject(parent), session_(session), model_(model), tree_(tree), treeModel_(treeModel) {
-    merge_ = new QAction(tr("&Merge Clusters"), this);
-    merge_->setStatusTip(tr("Make the selected clusters one locked cluster, then rebuild"));
-    lock_ = new QAction(tr("&Lock Cluster"), this);
-    lock_->setStatusTip(tr("Keep the selected clusters whole when clustering reruns"));
-    unlock_ = new QAction(tr("&Unlock Cluster"), this);
-    exclude_ = new QAction(tr("&Exclude from HLOD"), this);
-    exclude_->setStatusTip(tr("Hang the selected meshes directly from the root, never merged"));
-    connect(merge_, &QAction::triggered, this, &ClusterEditActions::merge);
-    connect(lock_, &QAction::triggered, this, &ClusterEditActions::lock);
-    connect(unlock_, &QAction::triggered, this, &ClusterEditActions::unlock);
-    connect(exclude_, &QAction::triggered, this, &ClusterEditActions::exclude);
-
-    tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    tree_->setContextMenuPolicy(Qt::CustomContextMenu);
-    connect(tree_, &QWidget::customContextMenuRequested, this, &ClusterEditActions::showMenu);
-    connect(session_, &ProjectSession::documentChanged, this,
-            &ClusterEditActions::rebuildWhenEditsChanged);
-    updateActions();
-}
-
-std::vector<InstanceSet> ClusterEditActions::selectedClusters() const {
-    std::vector<InstanceSet> sets;
-    const BuiltHlod& built = model_->built();
-    if (!built.build || !tree_->selectionModel()) return sets;
-    for (const QModelIndex& row : tree_->selectionModel()->selectedRows()) {
-        const Id node = treeModel_->nodeOf(row);
-        if (node < built.build->tree.nodes.size()) sets.push_back(leafSet(built.build->tree, node));
-    }
-    std::sort(sets.begin(), sets.end());
-    sets.erase(std::unique(sets.begin(), sets.end()), sets.end());
-    return sets;
-}
-
-void ClusterEditActions::updateActions() {
-    const std::size_t n = selectedClusters().size();
-    const bool idle = !model_->building();
-    merge_->setEnabled(idle && n >= 2);
-    lock_->setEnabled(idle && n >= 1);
-    unlock_->setEnabled(idle && n >= 1);
-    exclude_->setEnabled(idle && n >= 1);
-}
-
-void ClusterEditActions::showMenu(const QPoint& pos) {
-    updateActions();
-    QMenu menu(tree_);
-    menu.addActions({merge_, lock_, unlock_});
-    menu.addSeparator();
-    menu.addAction(exclude_);
-    menu.exec(tree_->viewport()->mapToGlobal(pos));
-}
-
 namespace {
 
-// Runs `command` through the session's undo adapter; false (and `failed`) when it does not
-// apply.
-bool run(ProjectSession* session, std::unique_ptr<Command> command) {
-    return session->undo()->execute(std::move(command));
+QAction* makeAction(const QString& text, const QString& tip, QObject* parent) {
+    auto* action = new QAction(text, parent);
+    action->setStatusTip(tip);
+    action->setToolTip(tip);
+    return action;
 }
 
 } // namespace
 
+ClusterEditActions::ClusterEditActions(ProjectSession* session, StudioModel* model, QTreeView* tree,
+                                       ClusterTreeModel* treeModel, QObject* parent)
+    : QObject(parent), session_(session), model_(model), tree_(tree), treeModel_(treeModel) {
+    merge_ = makeAction(tr("&Merge Clusters"),
+                        tr("Make the selected clusters one locked cluster, then rebuild"), this);
+    split_ = makeAction(tr("&Split Cluster"),
+                        tr("Remove the selected cluster: its children hang from its parent"), this);
+    lock_ = makeAction(tr("&Lock Cluster"),
+                       tr("Keep the selected clusters whole when clustering reruns"), this);
+    unlock_ = makeAction(tr("&Unlock Cluster"),
+                         tr("Let clustering regroup the selected locked clusters"), this);
+    exclude_ =
+        makeAction(tr("&Exclude from HLOD"),
+                   tr("Hang the selected meshes directly from the root, never merged"), this);
+    include_ =
+        makeAction(tr("&Include in HLOD"), tr("Cluster the selected excluded meshes again"), this);
+    connect(merge_, &QAction::triggered, this, &ClusterEditActions::merge);
+    connect(split_, &QAction::triggered, this, &ClusterEditActions::split);
+    connect(lock_, &QAction::triggered, this, &ClusterEditActions::lock);
+    connect(unlock_, &QAction::triggered, this, &ClusterEditActions::unlock);
+    connect(exclude_, &QAction::triggered, this, &ClusterEditActions::exclude);
+    connect(include_, &QAction::triggered, this, &ClusterEditActions::include);
+
+    tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    tree_->setContextMenuPolicy(Qt::CustomContextMenu);
+    tree_->setDragEnabled(true);
+    tree_->setAcceptDrops(true);
+    tree_->setDropIndicatorShown(true);
+    tree_->setDragDropMode(QAbstractItemView::InternalMove);
+    tree_->setDefaultDropAction(Qt::MoveAction);
+    connect(tree_, &QWidget::customContextMenuRequested, this, &ClusterEditActions::showTreeMenu);
+    connect(treeModel_, &ClusterTreeModel::moveRequested, this, &ClusterEditActions::moveTo);
+    updateActions();
+}
+
+void ClusterEditActions::attachViewport(Viewport* viewport, DisplayController* display) {
+    viewport_ = viewport;
+    display_ = display;
+    if (!viewport_ || !display_) return;
+    connect(viewport_, &Viewport::ctrlClicked, this, [this](const QPoint& pos) { toggleAt(pos); });
+    connect(viewport_, &Viewport::contextClicked, this, &ClusterEditActions::showViewportMenu);
+}
+
+QList<QAction*> ClusterEditActions::actions() const {
+    return {merge_, split_, lock_, unlock_, exclude_, include_};
+}
+
+std::vector<Id> ClusterEditActions::selectedNodes() const {
+    std::vector<Id> nodes;
+    const BuiltHlod& built = model_->built();
+    if (!built.build || !tree_->selectionModel()) return nodes;
+    for (const QModelIndex& row : tree_->selectionModel()->selectedRows()) {
+        const Id node = treeModel_->nodeOf(row);
+        if (node < built.build->tree.nodes.size()) nodes.push_back(node);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+}
+
+std::vector<InstanceSet> ClusterEditActions::selectedClusters() const {
+    std::vector<InstanceSet> sets;
+    for (Id node : selectedNodes())
+        sets.push_back(leafSet(model_->built().build->tree, node));
+    std::sort(sets.begin(), sets.end());
+    return sets;
+}
+
+InstanceSet ClusterEditActions::excludedInSelection() const {
+    const Document& doc = session_->document();
+    if (doc.clusterNode() == kNoNode) return {};
+    const InstanceSet& excluded = doc.graph().node(doc.clusterNode()).edits.excluded;
+    InstanceSet out;
+    for (const InstanceSet& set : selectedClusters())
+        for (Id instance : set)
+            if (std::binary_search(excluded.begin(), excluded.end(), instance))
+                out.push_back(instance);
+    return normalizedSet(std::move(out));
+}
+
+void ClusterEditActions::updateActions() {
+    const std::vector<Id> nodes = selectedNodes();
+    const std::size_t n = nodes.size();
+    const bool idle = !model_->building() && session_->document().clusterNode() != kNoNode;
+    bool splittable = false;
+    if (model_->hasBuild()) {
+        const ClusterTree& tree = model_->built().build->tree;
+        for (Id node : nodes)
+            splittable = splittable || (node != tree.root && !tree.nodes[node].isLeaf());
+    }
+    merge_->setEnabled(idle && n >= 2);
+    split_->setEnabled(idle && splittable);
+    lock_->setEnabled(idle && n >= 1);
+    unlock_->setEnabled(idle && n >= 1);
+    exclude_->setEnabled(idle && n >= 1);
+    include_->setEnabled(idle && !excludedInSelection().empty());
+}
+
+void ClusterEditActions::fillMenu(QMenu* menu) {
+    updateActions();
+    menu->addActions({merge_, split_});
+    menu->addSeparator();
+    menu->addActions({lock_, unlock_});
+    menu->addSeparator();
+    menu->addActions({exclude_, include_});
+}
+
+void ClusterEditActions::showTreeMenu(const QPoint& pos) {
+    QMenu menu(tree_);
+    fillMenu(&menu);
+    menu.exec(tree_->viewport()->mapToGlobal(pos));
+}
+
+void ClusterEditActions::showViewportMenu(const QPoint& pos) {
+    if (!model_->hasBuild()) return;
+    selectForMenuAt(pos);
+    QMenu menu(viewport_);
+    fillMenu(&menu);
+    menu.exec(viewport_->mapToGlobal(pos));
+}
+
+Id ClusterEditActions::pickCluster(const QPoint& pos) {
+    if (!display_ || !model_->hasBuild()) return kNoId;
+    display_->pickAt(pos); // selects what a plain click selects
+    Id node = model_->selection().clusterNode;
+    if (node == kNoId || model_->view().mode != DisplayMode::Clusters) return node;
+    // Clusters mode colours the clusters of the shown level: the click means the one holding it.
+    const ClusterTree& tree = model_->built().build->tree;
+    const std::vector<Id>& cut = display_->shownClusters();
+    for (Id n = node; n != kNoId; n = tree.nodes[n].parent) {
+        if (std::find(cut.begin(), cut.end(), n) != cut.end()) {
+            model_->selectClusterNode(n);
+            return n;
+        }
+    }
+    return node;
+}
+
+void ClusterEditActions::selectRows(const std::vector<Id>& nodes, Id current) {
+    QItemSelectionModel* selection = tree_->selectionModel();
+    QItemSelection rows;
+    for (Id node : nodes) {
+        const QModelIndex index = treeModel_->indexOfNode(node);
+        if (index.isValid()) rows.select(index, index);
+    }
+    selection->select(rows, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    const QModelIndex index = treeModel_->indexOfNode(current);
+    if (index.isValid()) {
+        selection->setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+        tree_->scrollTo(index);
+    }
+    updateActions();
+}
+
+Id ClusterEditActions::toggleAt(const QPoint& pos) {
+    std::vector<Id> nodes = selectedNodes();
+    const Id node = pickCluster(pos);
+    if (node == kNoId) {
+        selectRows(nodes, nodes.empty() ? kNoId : nodes.back());
+        return kNoId;
+    }
+    const auto it = std::find(nodes.begin(), nodes.end(), node);
+    if (it != nodes.end()) {
+        nodes.erase(it);
+        selectRows(nodes, nodes.empty() ? kNoId : nodes.back());
+    } else {
+        nodes.push_back(node);
+        selectRows(nodes, node);
+    }
+    return node;
+}
+
+Id ClusterEditActions::selectForMenuAt(const QPoint& pos) {
+    const std::vector<Id> nodes = selectedNodes();
+    const Id node = pickCluster(pos);
+    if (node != kNoId && std::find(nodes.begin(), nodes.end(), node) != nodes.end())
+        selectRows(nodes, node); // a right click on a selected cluster keeps the selection
+    return node;
+}
+
 bool ClusterEditActions::merge() {
     std::vector<InstanceSet> sets = selectedClusters();
-    if (sets.size() < 2) return false;
     const NodeId node = session_->document().clusterNode();
-    return run(session_, std::make_unique<MergeClusters>(node, std::move(sets)));
+    if (sets.size() < 2 || node == kNoNode) return false;
+    return session_->undo()->execute(std::make_unique<MergeClusters>(node, std::move(sets)));
+}
+
+bool ClusterEditActions::split() {
+    const NodeId node = session_->document().clusterNode();
+    if (!model_->hasBuild() || node == kNoNode) return false;
+    const ClusterTree& tree = model_->built().build->tree;
+    bool any = false;
+    for (Id cluster : selectedNodes()) {
+        if (cluster == tree.root || tree.nodes[cluster].isLeaf()) continue;
+        any = session_->undo()->execute(
+                  std::make_unique<SplitClusterOfTree>(node, leafSet(tree, cluster), tree)) ||
+              any;
+    }
+    return any;
 }
 
 bool ClusterEditActions::lock() {
     const NodeId node = session_->document().clusterNode();
+    if (node == kNoNode) return false;
     bool any = false;
     for (const InstanceSet& set : selectedClusters())
-        any = run(session_, std::make_unique<LockCluster>(node, set)) || any;
+        any = session_->undo()->execute(std::make_unique<LockCluster>(node, set)) || any;
     return any;
 }
 
 bool ClusterEditActions::unlock() {
     const NodeId node = session_->document().clusterNode();
+    if (node == kNoNode) return false;
     bool any = false;
     for (const InstanceSet& set : selectedClusters())
-        any = run(session_, std::make_unique<UnlockCluster>(node, set)) || any;
+        any = session_->undo()->execute(std::make_unique<UnlockCluster>(node, set)) || any;
     return any;
 }
 
@@ -106,20 +252,23 @@ bool ClusterEditActions::exclude() {
     InstanceSet all;
     for (const InstanceSet& set : selectedClusters())
         all.insert(all.end(), set.begin(), set.end());
-    if (all.empty()) return false;
     const NodeId node = session_->document().clusterNode();
-    return run(session_, std::make_unique<ExcludeInstance>(node, normalizedSet(std::move(all))));
+    if (all.empty() || node == kNoNode) return false;
+    return session_->undo()->execute(
+        std::make_unique<ExcludeInstance>(node, normalizedSet(std::move(all))));
 }
 
-void ClusterEditActions::rebuildWhenEditsChanged() {
-    const BuiltHlod& built = model_->built();
-    if (session_->replacing() || !built.build || !model_->scene()) return;
-    const HlodSettings wanted = session_->settings();
-    const ClusterParams& have = built.build->settings.cluster;
-    if (wanted.cluster.lockedGroups == have.lockedGroups &&
-        wanted.cluster.excluded == have.excluded)
-        return;
-    model_->build();
+bool ClusterEditActions::include() {
+    InstanceSet excluded = excludedInSelection();
+    const NodeId node = session_->document().clusterNode();
+    if (excluded.empty() || node == kNoNode) return false;
+    return session_->undo()->execute(std::make_unique<IncludeInstance>(node, std::move(excluded)));
+}
+
+bool ClusterEditActions::moveTo(const std::vector<InstanceSet>& items, const InstanceSet& target) {
+    const NodeId node = session_->document().clusterNode();
+    if (items.empty() || target.empty() || node == kNoNode || model_->building()) return false;
+    return session_->undo()->execute(std::make_unique<MoveToCluster>(node, items, target));
 }
 
 } // namespace hlod::widgets

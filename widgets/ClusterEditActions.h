@@ -1,17 +1,29 @@
-// Hand edits of clusters from the "Clusters" tab (issue #7): a context menu on the selected
-// rows of the cluster tree with Merge, Lock, Unlock and Exclude from HLOD. Each is a document
-// command (Commands.h: MergeClusters, LockCluster, UnlockCluster, ExcludeInstance) executed
-// through the UndoAdapter, so it is undoable; the HLOD is rebuilt afterwards. Undo and redo of
-// hand edits rebuild as well (whenever the document's locked groups or exclusions differ from
-// those of the current build).
+// Hand edits of clusters (issue #7) from the "Clusters" tab and the viewport: Merge, Split,
+// Lock, Unlock, Exclude from HLOD and Include in HLOD on the selected clusters (a context menu on
+// the tree rows and on the viewport), and Move by dragging rows onto another cluster in the tree
+// (ClusterTreeModel::moveRequested). Each is one document command (Commands.h: MergeClusters,
+// LockCluster, UnlockCluster, ExcludeInstance, IncludeInstance, MoveToCluster;
+// SplitClusterOfTree for splits) executed through the UndoAdapter, so it is undoable; the
+// rebuild that follows every change of the hand edits (undo and redo included) is AutoRebuild's.
 // Clusters are named by their leaf sets in the current build (HandEdits.h), so the actions need
-// a build; without one they are disabled. The tree allows extended selection.
+// a build; without one (or while one runs) they are disabled.
+//
+// Selection: the tree's selected rows are the clusters the actions act on; the tree allows
+// extended selection (Ctrl/Shift-click; SelectionSync keeps the extra rows). In the viewport
+// (attachViewport), Ctrl+click adds the cluster under the cursor to those rows (or removes it
+// when it is already selected) and a right click without dragging opens the same menu for the
+// cluster under the cursor (the selection stays when that cluster is part of it). "The cluster
+// under the cursor" is what a click selects (DisplayController::pickAt: the mesh's leaf, or the
+// drawn cluster of the HLOD preview); in Clusters mode it is the coloured cluster of the shown
+// level holding that mesh.
 #pragma once
 
 #include <vector>
 
 #include <QObject>
+#include <QPoint>
 
+#include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/graph/HandEdits.h"
 
 class QAction;
@@ -21,8 +33,10 @@ class QTreeView;
 namespace hlod::widgets {
 
 class ClusterTreeModel;
+class DisplayController;
 class ProjectSession;
 class StudioModel;
+class Viewport;
 
 class ClusterEditActions : public QObject {
     Q_OBJECT
@@ -30,35 +44,61 @@ public:
     ClusterEditActions(ProjectSession* session, StudioModel* model, QTreeView* tree,
                        ClusterTreeModel* treeModel, QObject* parent = nullptr);
 
+    // Ctrl+click and the context menu in the viewport (both may be null: nothing happens).
+    void attachViewport(Viewport* viewport, DisplayController* display);
+
     QAction* mergeAction() const { return merge_; }
+    QAction* splitAction() const { return split_; }
     QAction* lockAction() const { return lock_; }
     QAction* unlockAction() const { return unlock_; }
     QAction* excludeAction() const { return exclude_; }
+    QAction* includeAction() const { return include_; }
+    QList<QAction*> actions() const;
     // The leaf sets of the selected rows (sorted by first instance).
     std::vector<InstanceSet> selectedClusters() const;
+    // The cluster nodes of the selected rows in the current build (ascending).
+    std::vector<Id> selectedNodes() const;
     // Enables the actions for the current selection and build.
     void updateActions();
+    // Fills `menu` with the actions (enabled for the current selection).
+    void fillMenu(QMenu* menu);
 
     bool merge();
+    bool split();
     bool lock();
     bool unlock();
     bool exclude();
+    bool include();
+    // Moves `items` (leaf sets) into the cluster `target` (a leaf set).
+    bool moveTo(const std::vector<InstanceSet>& items, const InstanceSet& target);
+
+    // Viewport gestures at `pos` (viewport coordinates); public for tests. The node the gesture
+    // picked, kNoId when nothing is under the cursor.
+    Id toggleAt(const QPoint& pos);
+    Id selectForMenuAt(const QPoint& pos);
 
 Q_SIGNALS:
     void failed(const QString& message);
 
 private:
-    void showMenu(const QPoint& pos);
-    void rebuildWhenEditsChanged();
+    void showTreeMenu(const QPoint& pos);
+    void showViewportMenu(const QPoint& pos);
+    Id pickCluster(const QPoint& pos);
+    void selectRows(const std::vector<Id>& nodes, Id current);
+    InstanceSet excludedInSelection() const;
 
     ProjectSession* session_;
     StudioModel* model_;
     QTreeView* tree_;
     ClusterTreeModel* treeModel_;
+    Viewport* viewport_ = nullptr;
+    DisplayController* display_ = nullptr;
     QAction* merge_ = nullptr;
+    QAction* split_ = nullptr;
     QAction* lock_ = nullptr;
     QAction* unlock_ = nullptr;
     QAction* exclude_ = nullptr;
+    QAction* include_ = nullptr;
 };
 
 } // namespace hlod::widgets

@@ -1,9 +1,13 @@
 // Item model over an HLOD cluster tree (see ClusterTreeModel.h).
 #include "widgets/ClusterTreeModel.h"
 
+#include <algorithm>
 #include <numbers>
 
+#include <QJsonArray>
+#include <QJsonDocument>
 #include <QLocale>
+#include <QMimeData>
 
 #include "pipeline/view/TreeViews.h"
 
@@ -37,6 +41,98 @@ QModelIndex ClusterTreeModel::indexOfNode(Id node) const {
     if (!build_ || node >= build_->tree.nodes.size()) return {};
     const int row = node == build_->tree.root ? 0 : rowInParent_[node];
     return createIndex(row, 0, static_cast<quintptr>(node));
+}
+
+InstanceSet ClusterTreeModel::leafSetOf(Id node) const {
+    if (!build_ || node >= build_->tree.nodes.size()) return {};
+    return leafSet(build_->tree, node);
+}
+
+Qt::ItemFlags ClusterTreeModel::flags(const QModelIndex& index) const {
+    Qt::ItemFlags f = QAbstractItemModel::flags(index);
+    if (!index.isValid() || !build_) return f;
+    const Id node = nodeOf(index);
+    if (node == build_->tree.root) return f;
+    f |= Qt::ItemIsDragEnabled;
+    if (!build_->tree.nodes[node].isLeaf()) f |= Qt::ItemIsDropEnabled;
+    return f;
+}
+
+QStringList ClusterTreeModel::mimeTypes() const { return {QString::fromLatin1(kMimeType)}; }
+
+QMimeData* ClusterTreeModel::mimeData(const QModelIndexList& indexes) const {
+    std::vector<Id> nodes;
+    for (const QModelIndex& index : indexes)
+        if (index.isValid() && index.column() == NameColumn) nodes.push_back(nodeOf(index));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    QJsonArray sets;
+    for (Id node : nodes) {
+        QJsonArray set;
+        for (Id instance : leafSetOf(node))
+            set.append(static_cast<qint64>(instance));
+        sets.append(set);
+    }
+    auto* data = new QMimeData;
+    data->setData(QString::fromLatin1(kMimeType),
+                  QJsonDocument(sets).toJson(QJsonDocument::Compact));
+    return data;
+}
+
+bool ClusterTreeModel::decodeDrop(const QMimeData* data, const QModelIndex& parent,
+                                  std::vector<InstanceSet>& items, InstanceSet& target) const {
+    if (!build_ || !data || !parent.isValid()) return false;
+    const QJsonDocument json = QJsonDocument::fromJson(data->data(QString::fromLatin1(kMimeType)));
+    if (!json.isArray()) return false;
+    items.clear();
+    for (const QJsonValue& set : json.array()) {
+        InstanceSet ids;
+        for (const QJsonValue& id : set.toArray()) {
+            const qint64 v = id.toInteger(-1);
+            if (v < 0) return false;
+            ids.push_back(static_cast<Id>(v));
+        }
+        if (ids.empty()) return false;
+        items.push_back(normalizedSet(std::move(ids)));
+    }
+    // A drop between two rows lands on the cluster that holds them.
+    target = leafSetOf(nodeOf(parent));
+    return !items.empty();
+}
+
+bool ClusterTreeModel::acceptsMove(const std::vector<InstanceSet>& items,
+                                   const InstanceSet& target) const {
+    if (!build_ || items.empty()) return false;
+    const ClusterTree& tree = build_->tree;
+    const Id t = findCluster(tree, target);
+    if (t == kNoId || t == tree.root || tree.nodes[t].isLeaf()) return false;
+    bool anyMoves = false;
+    for (const InstanceSet& item : items) {
+        const Id i = findCluster(tree, item);
+        if (i == kNoId || i == tree.root) return false;
+        // The target may not be a dragged row or lie inside one.
+        if (std::includes(item.begin(), item.end(), target.begin(), target.end())) return false;
+        anyMoves = anyMoves || tree.nodes[i].parent != t;
+    }
+    return anyMoves;
+}
+
+bool ClusterTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction action, int, int,
+                                       const QModelIndex& parent) const {
+    if (action != Qt::MoveAction) return false;
+    std::vector<InstanceSet> items;
+    InstanceSet target;
+    return decodeDrop(data, parent, items, target) && acceptsMove(items, target);
+}
+
+bool ClusterTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row,
+                                    int column, const QModelIndex& parent) {
+    if (!canDropMimeData(data, action, row, column, parent)) return false;
+    std::vector<InstanceSet> items;
+    InstanceSet target;
+    decodeDrop(data, parent, items, target);
+    Q_EMIT moveRequested(items, target);
+    return true;
 }
 
 QModelIndex ClusterTreeModel::index(int row, int column, const QModelIndex& parent) const {

@@ -6,6 +6,14 @@
 // in cubic metres (of the tree's volume type: the sphere for sphere trees, the box otherwise)
 // and proxy triangles (inner nodes; leaves draw their original mesh and show none).
 // The model shows a build it is given (shared, immutable); it owns no pipeline state.
+//
+// Drag and drop (the "move" hand edit of issue #7): rows below the root can be dragged (meshes
+// and clusters) and dropped onto an inner cluster below the root. The model never moves rows
+// itself: a drop emits moveRequested(items, target) with the leaf sets of the dragged rows and
+// of the target (HandEdits.h names clusters by leaf set), the owner turns it into a
+// MoveToCluster command and the rebuild shows the result. Refused drops: onto the root (that
+// would lock the whole scene), a leaf, a dragged row or a row inside one, or the cluster every
+// dragged row already hangs from. The payload (kMimeType) is JSON: an array of leaf sets.
 #pragma once
 
 #include <memory>
@@ -14,6 +22,7 @@
 #include <QAbstractItemModel>
 
 #include "pipeline/doc/HlodBuild.h"
+#include "pipeline/graph/HandEdits.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::widgets {
@@ -48,12 +57,37 @@ public:
 
     QModelIndex indexOfNode(Id node) const;
     Id nodeOf(const QModelIndex& index) const;
+    // The leaf set (sorted instance ids) below a node of the shown tree; empty when unknown.
+    InstanceSet leafSetOf(Id node) const;
+    // Whether moving `items` into `target` (leaf sets of the shown tree) is a drop this model
+    // accepts (see the rules above).
+    bool acceptsMove(const std::vector<InstanceSet>& items, const InstanceSet& target) const;
+
+    static constexpr const char* kMimeType = "application/x-hlod-cluster-sets";
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    Qt::DropActions supportedDragActions() const override { return Qt::MoveAction; }
+    Qt::DropActions supportedDropActions() const override { return Qt::MoveAction; }
+    QStringList mimeTypes() const override;
+    QMimeData* mimeData(const QModelIndexList& indexes) const override;
+    bool canDropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                         const QModelIndex& parent) const override;
+    bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                      const QModelIndex& parent) override;
 
     // Values shown for a node (also used by tests).
     QString name(Id node) const;
     double volume(Id node) const;
 
+Q_SIGNALS:
+    // A drop asked to move `items` (leaf sets) into the cluster `target` (a leaf set).
+    void moveRequested(const std::vector<hlod::InstanceSet>& items,
+                       const hlod::InstanceSet& target);
+
 private:
+    // The dragged leaf sets in `data` and the cluster a drop at (row, parent) lands on.
+    bool decodeDrop(const QMimeData* data, const QModelIndex& parent,
+                    std::vector<InstanceSet>& items, InstanceSet& target) const;
+
     std::shared_ptr<const Scene> scene_;
     std::shared_ptr<const HlodBuild> build_;
     std::vector<std::uint64_t> triangles_;

@@ -37,9 +37,11 @@ void HlodBuilder::abandon() {
     for (auto& job : jobs_)
         job->cancel = true;
     current_ = 0;
+    last_ = {}; // a new scene replaces the old one: do not keep it alive
 }
 
 void HlodBuilder::start(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {
+    std::shared_ptr<const HlodBuild> previous = last_.scene == scene ? last_.build : nullptr;
     abandon();
     auto job = std::make_unique<Job>();
     job->id = nextId_++;
@@ -48,10 +50,12 @@ void HlodBuilder::start(std::shared_ptr<const Scene> scene, const HlodSettings& 
     jobs_.push_back(std::move(job));
     Q_EMIT started();
     raw->thread =
-        std::thread([this, raw, scene = std::move(scene), settings] { run(raw, scene, settings); });
+        std::thread([this, raw, scene = std::move(scene), settings,
+                     previous = std::move(previous)] { run(raw, scene, settings, previous); });
 }
 
-void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings) {
+void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings,
+                      std::shared_ptr<const HlodBuild> previous) {
     const std::uint64_t id = job->id;
     auto post = [this](auto&& fn) {
         QMetaObject::invokeMethod(this, std::forward<decltype(fn)>(fn), Qt::QueuedConnection);
@@ -86,7 +90,8 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
     bool wasCancelled = false;
     try {
         const auto start = Clock::now();
-        auto build = std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress));
+        auto build =
+            std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress, previous.get()));
         result.original = originalStats(*scene);
         result.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -112,8 +117,10 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
             Q_EMIT cancelled();
         else if (!error.isEmpty())
             Q_EMIT failed(error);
-        else
+        else {
+            last_ = result;
             Q_EMIT finished(result);
+        }
     });
 }
 

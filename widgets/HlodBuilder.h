@@ -1,5 +1,10 @@
-// Runs the HLOD pipeline (hlod::buildHlod: cluster, then bake) off the GUI thread, so the editor
-// stays responsive while proxies bake.
+// Runs the HLOD pipeline (hlod::buildHlod: cluster, dissolve split clusters, bake) off the GUI
+// thread, so the editor stays responsive while proxies bake. The hand edits travel in the
+// settings (locked groups, exclusions, split clusters), so a build here gives the same tree as
+// `hlod build PROJECT.hlodproj` for the same project.
+// Incremental: the builder keeps its last finished build; the next build of the same scene with
+// the same clustering settings reuses its tree and only bakes (unchanged proxies come from the
+// disk cache), so a bake parameter change reruns only what is downstream of it.
 //
 // Threading: each start() runs on its own std::thread (like SceneLoader); progress and results
 // come back as queued calls on this object's thread. Starting again cancels the running build,
@@ -44,7 +49,8 @@ public:
     void start(std::shared_ptr<const Scene> scene, const HlodSettings& settings);
     // Raises the cancel flag of the running build; cancelled() follows once it has stopped.
     void cancel();
-    // Drops the running build without any further signal (a new scene replaces the old one).
+    // Drops the running build without any further signal and forgets the last build (a new
+    // scene replaces the old one).
     void abandon();
     bool busy() const { return current_ != 0; }
 
@@ -63,12 +69,14 @@ private:
         std::thread thread;
     };
 
-    void run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings);
+    void run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings,
+             std::shared_ptr<const HlodBuild> previous);
     void finish(std::uint64_t id);
 
     std::vector<std::unique_ptr<Job>> jobs_;
     std::uint64_t nextId_ = 1;
     std::uint64_t current_ = 0; // id whose outcome is wanted; 0 = none
+    BuiltHlod last_;            // the last finished build (its tree may be reused)
 };
 
 } // namespace hlod::widgets

@@ -16,9 +16,13 @@ SelectionSync::SelectionSync(StudioModel* model, QTreeView* sceneTree, SceneTree
     : QObject(parent), model_(model), sceneTree_(sceneTree), sceneModel_(sceneModel),
       clusterTree_(clusterTree), clusterModel_(clusterModel) {
     connect(model_, &StudioModel::selectionChanged, this, &SelectionSync::showModelSelection);
-    for (QTreeView* view : {sceneTree_, clusterTree_})
+    // Qt moves the current row before it updates the selection of a click: follow both.
+    for (QTreeView* view : {sceneTree_, clusterTree_}) {
         connect(view->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
                 [this, view] { onTreeCurrentChanged(view); });
+        connect(view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+                [this, view] { onTreeCurrentChanged(view); });
+    }
     for (QAbstractItemModel* m : {static_cast<QAbstractItemModel*>(sceneModel_),
                                   static_cast<QAbstractItemModel*>(clusterModel_)})
         connect(m, &QAbstractItemModel::modelReset, this, &SelectionSync::showModelSelection);
@@ -27,7 +31,9 @@ SelectionSync::SelectionSync(StudioModel* model, QTreeView* sceneTree, SceneTree
 void SelectionSync::showModelSelection() {
     const StudioSelection& s = model_->selection();
     syncing_ = true;
-    auto show = [](QTreeView* view, const QModelIndex& index) {
+    auto show = [this](QTreeView* view, const QModelIndex& index) {
+        // The clicked tree already shows the user's rows (one or several): keep them.
+        if (view == userTree_) return;
         if (!index.isValid()) {
             view->selectionModel()->clear();
             return;
@@ -43,13 +49,22 @@ void SelectionSync::showModelSelection() {
 
 void SelectionSync::onTreeCurrentChanged(QTreeView* view) {
     if (syncing_) return;
-    const QModelIndex current = view->selectionModel()->currentIndex();
+    QModelIndex current = view->selectionModel()->currentIndex();
     // A model reset clears the current row: that is not the user choosing nothing.
     if (!current.isValid()) return;
-    if (view == sceneTree_)
+    userTree_ = view;
+    // A Ctrl-click that deselects the current row: the model shows another selected row.
+    if (!view->selectionModel()->isSelected(current)) {
+        const QModelIndexList rows = view->selectionModel()->selectedRows();
+        current = rows.isEmpty() ? QModelIndex() : rows.front();
+    }
+    if (!current.isValid())
+        model_->clearSelection();
+    else if (view == sceneTree_)
         model_->selectSceneNode(sceneModel_->nodeOf(current));
     else
         model_->selectClusterNode(clusterModel_->nodeOf(current));
+    userTree_ = nullptr;
 }
 
 } // namespace hlod::widgets

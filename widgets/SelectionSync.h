@@ -3,6 +3,10 @@
 // viewport); a selection made elsewhere (a click in the viewport) selects and reveals the
 // matching rows, or clears a tree that has no row for it.
 // It holds no selection of its own: the model is the one source; a guard stops the echo.
+// Multi-selection: a Ctrl- or Shift-click in a tree makes the clicked row the model's selection
+// (what the viewport highlights) but leaves the tree's other selected rows alone, so several
+// clusters can be selected for the hand edits (ClusterEditActions reads the tree's selection).
+// A selection made elsewhere replaces the rows of both trees.
 #pragma once
 
 #include <QObject>
@@ -35,6 +39,7 @@ private:
     QTreeView* clusterTree_;
     ClusterTreeModel* clusterModel_;
     bool syncing_ = false;
+    QTreeView* userTree_ = nullptr; // the tree whose click is being passed to the model
 };
 
 } // namespace hlod::widgets

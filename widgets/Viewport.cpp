@@ -340,12 +340,18 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    const bool click = drag_ != Drag::None && !dragged_ && event->button() == Qt::LeftButton &&
-                       !(event->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier));
+    const bool still = drag_ != Drag::None && !dragged_;
+    const Qt::KeyboardModifiers mods = event->modifiers();
+    const bool left = still && event->button() == Qt::LeftButton && !(mods & Qt::ShiftModifier);
+    const bool click = left && !(mods & Qt::ControlModifier);
+    const bool ctrlClick = left && (mods & Qt::ControlModifier);
+    const bool context = still && event->button() == Qt::RightButton;
     drag_ = Drag::None;
     setInteractive(false);
     event->accept();
     if (click) Q_EMIT clicked(pressPos_);
+    if (ctrlClick) Q_EMIT ctrlClicked(pressPos_);
+    if (context) Q_EMIT contextClicked(pressPos_);
 }
 
 void Viewport::setInteractive(bool interactive) {

@@ -7,7 +7,8 @@
 // Navigation drives the vtkCamera directly (CameraController): no vtkRenderWindowInteractor.
 //
 // Mouse: left drag orbits, middle drag or Shift+left pans, right drag or Ctrl+left zooms, the
-// wheel zooms. Keys: F fits the view, arrows orbit in 10 degree steps, +/- zoom.
+// wheel zooms; clicks without a drag are reported (clicked, ctrlClicked, contextClicked).
+// Keys: F fits the view, arrows orbit in 10 degree steps, +/- zoom.
 //
 // Without a usable OpenGL 3.2 context the widget shows a message instead of rendering and
 // reports it through glFailed(); nothing in VTK is touched then.
@@ -88,6 +89,10 @@ Q_SIGNALS:
     void aboutToRender();
     // A left button press and release without dragging, in widget coordinates.
     void clicked(const QPoint& pos);
+    // The same with Ctrl held (add to / remove from a selection; a Ctrl drag still zooms).
+    void ctrlClicked(const QPoint& pos);
+    // A right button press and release without dragging (a context menu; a drag still zooms).
+    void contextClicked(const QPoint& pos);
     void glFailed(const QString& message);
 
 protected:

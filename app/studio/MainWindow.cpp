@@ -141,6 +141,7 @@ void MainWindow::createActions() {
         fit->setEnabled(false);
         reset->setEnabled(false);
     }
+    addCompareActions(viewMenu_);
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         viewMenu_->addAction(dock->toggleViewAction());
@@ -420,6 +421,7 @@ void MainWindow::requestScreenshot(const QString& path, bool viewportOnly) {
 }
 
 void MainWindow::takeScreenshot(int attemptsLeft) {
+    if (viewport_ && !compareSpec_.isEmpty()) return; // the comparison window is saved instead
     // The window must be mapped and laid out before a grab means anything; poll briefly.
     const bool exposed = windowHandle() && windowHandle()->isExposed();
     if (!exposed && attemptsLeft > 0) {

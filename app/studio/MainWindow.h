@@ -4,8 +4,10 @@
 // Help.
 // Editing (issue #7): the window owns a ProjectSession (the hlod::Document, its undo history,
 // the project file). The Parameters dock edits the document's parameters through commands,
-// builds take their settings from the document, the Edit menu and the History dock follow its
-// undo stack, the Clusters tab hand-edits clusters, File saves and opens `.hlodproj` projects
+// builds take their settings from the document (and rerun after every change once there is a
+// build), the Pipeline dock shows the document's node graph with the builds' statuses, the Edit
+// menu and the History dock follow its undo stack, the Clusters tab and the viewport hand-edit
+// clusters (MainWindowEdit.cpp), File saves and opens `.hlodproj` projects
 // (dirty mark in the title, save prompt on close, autosave and recovery) and exports packages.
 // Opening a scene (not a project) starts a new untitled project over it, keeping parameters.
 //
@@ -42,6 +44,7 @@ class QTreeView;
 namespace hlod::widgets {
 struct LoadedScene;
 class BuildParameters;
+class CompareView;
 class ClusterEditActions;
 class ProjectSession;
 class ClusterTreeModel;
@@ -85,6 +88,14 @@ public:
         bool tintByDepth = false;
     };
     void setStartupView(const StartupView& view);
+    // MainWindowCompare.cpp: once a scene has loaded, open View ▸ Compare Configurations with
+    // `spec` ("LEFT:RIGHT", CompareConfig.h); with --screenshot, the comparison window is saved
+    // once both sides are built, instead of the main window.
+    void setStartupCompare(const QString& spec);
+    // The comparison window; null until first opened.
+    hlod::widgets::CompareView* compareView() const { return compare_; }
+    // View ▸ Compare Configurations: opens (or raises) the comparison of the open scene.
+    void showCompare();
 
     hlod::widgets::Viewport* viewport() const { return viewport_; }
     hlod::widgets::StudioModel* model() const { return model_; }
@@ -138,6 +149,13 @@ private:
     bool maybeSave();
     void exportDialog();
     void onDocumentReplaced();
+    // MainWindowCompare.cpp: the comparison window (View menu, scene and document changes,
+    // --compare startup and screenshot).
+    void addCompareActions(QMenu* view);
+    void createCompareView();
+    void onCompareSceneChanged();
+    void openStartupCompare();
+    void takeCompareScreenshot(int attemptsLeft);
 
     void openDialog();
     void openFolderDialog();
@@ -187,6 +205,10 @@ private:
     QMenu* recentMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QString glProblem_;
+    hlod::widgets::CompareView* compare_ = nullptr;
+    QAction* compareAction_ = nullptr;
+    QString compareSpec_;         // --compare: kept so the main window's screenshot defers
+    bool compareStarted_ = false; // the --compare comparison has been opened
 
     RecentScenes recent_;
     bool writeSettings_ = true;

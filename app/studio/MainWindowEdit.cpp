@@ -1,7 +1,10 @@
 // The editing parts of the main window (see MainWindow.h): the ProjectSession that owns the
 // document, the Edit menu (Undo / Redo from the document's history), the History dock
-// (QUndoView), the Parameters dock (ParameterPanels of the Cluster and Bake nodes: every edit a
-// document command) and the cluster hand edits of the Clusters tab.
+// (QUndoView), the Parameters dock (ParameterPanels of the Cluster and Bake nodes and of the
+// node selected in the graph: every edit a document command), the Pipeline dock (the node graph
+// of the document: add, remove, connect, status colours of the builds), the automatic rebuild
+// after parameter and hand edits (AutoRebuild), and the cluster hand edits of the Clusters tab
+// and the viewport (Ctrl+click adds to the selection, right click opens the edit menu).
 #include "MainWindow.h"
 
 #include <QAction>
@@ -16,7 +19,9 @@
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/LogView.h"
 #include "widgets/StudioModel.h"
+#include "widgets/doc/AutoRebuild.h"
 #include "widgets/doc/ProjectSession.h"
+#include "widgets/graph/PipelineEditor.h"
 #include "widgets/params/BuildParameters.h"
 
 using hlod::widgets::ProjectSession;
@@ -28,6 +33,8 @@ void MainWindow::createSession() {
             &hlod::widgets::StudioModel::syncSettings);
     connect(session_, &ProjectSession::dirtyChanged, this, [this] { updateTitle(); });
     connect(session_, &ProjectSession::projectChanged, this, &MainWindow::onDocumentReplaced);
+    // Parameter and hand edits (and their undo) rebuild the HLOD once there is one.
+    new hlod::widgets::AutoRebuild(session_, model_, this);
 }
 
 void MainWindow::createEditDocks() {
@@ -46,8 +53,28 @@ void MainWindow::createEditDocks() {
     tabifyDockWidget(paramsDock, historyDock);
     paramsDock->raise();
 
+    // The node graph shares the bottom with the log (tabs, the graph in front); the right
+    // column (parameters, statistics) keeps the full height of the window.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    auto* pipeline = new hlod::widgets::PipelineEditor(session_, model_);
+    auto* pipelineDock = new QDockWidget(tr("Pipeline"), this);
+    pipelineDock->setObjectName(QStringLiteral("PipelineDock"));
+    pipelineDock->setWidget(pipeline);
+    addDockWidget(Qt::BottomDockWidgetArea, pipelineDock);
+    if (auto* logDock = findChild<QDockWidget*>(QStringLiteral("LogDock")))
+        tabifyDockWidget(pipelineDock, logDock);
+    pipelineDock->raise();
+    resizeDocks({pipelineDock}, {190}, Qt::Vertical);
+    connect(pipeline, &hlod::widgets::PipelineEditor::nodeSelected, this,
+            [this, paramsDock](quint32 node) {
+                buildParams_->showNode(node);
+                paramsDock->show();
+                paramsDock->raise();
+            });
+
     clusterEdits_ =
         new hlod::widgets::ClusterEditActions(session_, model_, clusterTree_, clusterModel_, this);
+    clusterEdits_->attachViewport(viewport_, display_);
     connect(session_->undo(), &hlod::widgets::UndoAdapter::commandFailed, this,
             [this](const QString& message) {
                 log_->error(message);
@@ -68,10 +95,11 @@ void MainWindow::createEditMenu() {
     edit->addAction(redo);
     edit->addSeparator();
     QMenu* clusters = edit->addMenu(tr("&Clusters"));
-    clusters->addActions({clusterEdits_->mergeAction(), clusterEdits_->lockAction(),
-                          clusterEdits_->unlockAction(), clusterEdits_->excludeAction()});
-    connect(clusters, &QMenu::aboutToShow, clusterEdits_,
-            &hlod::widgets::ClusterEditActions::updateActions);
+    connect(clusters, &QMenu::aboutToShow, clusterEdits_, [this, clusters] {
+        clusters->clear();
+        clusterEdits_->fillMenu(clusters);
+    });
+    clusterEdits_->fillMenu(clusters);
 }
 
 void MainWindow::onDocumentReplaced() {

@@ -3,14 +3,18 @@
 //
 //   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
 //               [--build] [--mode original|clusters|hlod] [--level N] [--tint-depth]
+//               [--compare LEFT:RIGHT]
 //
 // With no file the embedded sample scene opens. --build runs the HLOD pipeline once the scene
 // is loaded; --mode picks the display mode (clusters and hlod need a build and imply --build);
 // --level the cluster level shown in Clusters mode; --tint-depth tints the HLOD preview's
-// drawn nodes by their depth in the tree. --screenshot waits until the scene is
-// loaded (and built) and rendered, saves the window (or only the 3D view) and exits: 0 on
-// success, 1 when loading, building or saving fails, 2 when the arguments are wrong or OpenGL
-// is unavailable (then the image shows the window with its explanation in place of the 3D view).
+// drawn nodes by their depth in the tree. --compare opens View ▸ Compare Configurations with
+// two configurations (e.g. sphere:aabb-k2, see widgets/compare/CompareConfig.h); with
+// --screenshot the comparison window is saved once both sides are built. --screenshot waits
+// until the scene is loaded (and built) and rendered, saves the window (or only the 3D view)
+// and exits: 0 on success, 1 when loading, building or saving fails, 2 when the arguments are
+// wrong or OpenGL is unavailable (then the image shows the window with its explanation in
+// place of the 3D view).
 #include <cstdio>
 
 #include <QApplication>
@@ -25,6 +29,7 @@
 #include "MainWindow.h"
 #include "widgets/GlSupport.h"
 #include "widgets/StudioModel.h"
+#include "widgets/compare/CompareConfig.h"
 
 namespace {
 
@@ -49,6 +54,7 @@ struct Options {
     QSize size;
     QPointF orbit; // degrees added to the default view: azimuth, elevation
     MainWindow::StartupView startup;
+    QString compare; // --compare LEFT:RIGHT
 };
 
 bool usage(const QString& message) {
@@ -125,9 +131,23 @@ bool parseOptions(QApplication& app, Options& options) {
     const QCommandLineOption tint(
         QStringLiteral("tint-depth"),
         QCoreApplication::translate("main", "HLOD preview: tint drawn nodes by tree depth."));
-    parser.addOptions({screenshot, viewportOnly, size, orbit, build, mode, level, tint});
+    const QCommandLineOption compare(
+        QStringLiteral("compare"),
+        QCoreApplication::translate("main", "Compare two configurations side by side, e.g. "
+                                            "sphere:aabb-k2 (also octree, original, current, "
+                                            "@S for the screen size)."),
+        QStringLiteral("LEFT:RIGHT"));
+    parser.addOptions({screenshot, viewportOnly, size, orbit, build, mode, level, tint, compare});
     parser.process(app);
     if (!parseStartup(parser, build, mode, level, tint, options.startup)) return false;
+    if (parser.isSet(compare)) {
+        std::pair<hlod::widgets::CompareConfig, hlod::widgets::CompareConfig> configs;
+        QString error;
+        if (!hlod::widgets::parseConfigPair(parser.value(compare), hlod::HlodSettings{}, configs,
+                                            &error))
+            return usage(QStringLiteral("--compare: ") + error);
+        options.compare = parser.value(compare);
+    }
 
     options.files = parser.positionalArguments();
     options.screenshot = parser.value(screenshot);
@@ -196,6 +216,7 @@ int main(int argc, char* argv[]) {
     if (options.size.isValid()) window.resize(options.size);
     window.setInitialOrbit(options.orbit.x(), options.orbit.y());
     window.setStartupView(options.startup);
+    if (!options.compare.isEmpty()) window.setStartupCompare(options.compare);
     window.show();
     window.openFiles(options.files);
     return app.exec();

@@ -1,6 +1,9 @@
 // Region descriptions and size classes for the cost bounds (see CostBounds.h).
 #include "pipeline/cluster/CostBounds.h"
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace hlod {
@@ -12,6 +15,59 @@ Region emptyRegion() {
     r.minVolume = big;
     r.minExtent = glm::dvec3(big);
     r.minArea = glm::dvec3(big);
+    return r;
+}
+
+namespace {
+
+// The next float towards -infinity / +infinity of a float that is not NaN (std::nextafter
+// without the library call: packing runs for every node of every level).
+float nextDown(float f) {
+    if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+    if (f == -std::numeric_limits<float>::infinity()) return f;
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
+}
+float nextUp(float f) { return -nextDown(-f); }
+
+// The float nearest to x on the side that keeps a bound valid.
+float roundDown(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? nextDown(f) : f;
+}
+float roundUp(double x) {
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? nextUp(f) : f;
+}
+
+} // namespace
+
+void packRegion(const Region& r, bool boxModel, PackedRegion& out, PackedExtra& extra) {
+    for (int a = 0; a < 3; ++a) {
+        out.lo[a] = roundDown(r.box.min[a]);
+        out.hi[a] = roundUp(r.box.max[a]);
+    }
+    out.maxFv = roundUp(r.maxFv);
+    out.minSize = roundDown(boxModel ? r.minVolume : r.minRadius);
+    if (boxModel) {
+        for (int a = 0; a < 3; ++a) {
+            extra.minExtent[a] = roundDown(r.minExtent[a]);
+            extra.minArea[a] = roundDown(r.minArea[a]);
+        }
+    }
+}
+
+Region unpackRegion(PackedRef g) {
+    Region r;
+    r.box = Aabb{lowCorner(g), highCorner(g)};
+    r.maxFv = maxFvOf(g);
+    // The minima the model does not read stay 0 (a valid lower bound of anything).
+    r.minRadius = g.e == nullptr ? minRadiusOf(g) : 0.0;
+    r.minVolume = g.e != nullptr ? minVolumeOf(g) : 0.0;
+    if (g.e != nullptr) {
+        r.minExtent = minExtentOf(g);
+        r.minArea = minAreaOf(g);
+    }
     return r;
 }
 

@@ -80,7 +80,7 @@ public:
             regions[i] = regionOf(model_, g.unit);
             classes[i] = sizeClass(model_, g.unit);
         }
-        bvh_.build(regions, classes);
+        bvh_.build(regions, classes, model_.volume() == VolumeType::Aabb);
         seen_.assign(n, 0);
     }
 
@@ -102,8 +102,10 @@ public:
         const std::size_t n = units_.size();
         lists_.assign(n * k_, Near{kInf, kNone});
         listSize_.assign(n, 0);
-        auto exceeds = [&](const Region& a, const Region& b) {
-            return pairBoundExceeds(model_, a, b, budget);
+        const PackedPairTest test(model_, budget);
+        // Inlined into the join's loops (out of line it costs a call per test).
+        auto exceeds = [&](PackedRef a, PackedRef b) __attribute__((always_inline)) {
+            return test.exceeds(a, b);
         };
         // The join has already tested the bound of the two items themselves.
         auto visit = [&](std::uint32_t i, std::uint32_t j) {
@@ -277,27 +279,34 @@ private:
         best.cost = budget;
         best.group = g;
         const std::uint32_t stamp = ++stamp_;
+        // First the distinct adjacent groups, with their (scattered) units prefetched, then
+        // the costs: the loads overlap instead of each waiting on the previous test.
+        candidates_.clear();
         for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
             for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
                 const std::uint32_t h = groupOf_[graph_.adj[e]];
                 if (h == g || seen_[h] == stamp) continue;
                 seen_[h] = stamp;
-                const Group& H = groups_[h];
-                if (G.size + H.size > cap_) continue;
-                const bool gLow = G.key < H.key;
-                Candidate c;
-                // Above best.cost (or the budget) the pair cannot win: stop at the cheap bound.
-                const double limit = best.cost;
-                c.cost = gLow ? model_.mergeCostWithin(G.unit, H.unit, limit)
-                              : model_.mergeCostWithin(H.unit, G.unit, limit);
-                c.lo = gLow ? G.key : H.key;
-                c.hi = gLow ? H.key : G.key;
-                if (c.cost > budget || (best.partner != kNone && !keyLess(c, best))) continue;
-                best.cost = c.cost;
-                best.lo = c.lo;
-                best.hi = c.hi;
-                best.partner = h;
+                __builtin_prefetch(&groups_[h]);
+                candidates_.push_back(h);
             }
+        }
+        for (const std::uint32_t h : candidates_) {
+            const Group& H = groups_[h];
+            if (G.size + H.size > cap_) continue;
+            const bool gLow = G.key < H.key;
+            Candidate c;
+            // Above best.cost (or the budget) the pair cannot win: stop at the cheap bound.
+            const double limit = best.cost;
+            c.cost = gLow ? model_.mergeCostWithin(G.unit, H.unit, limit)
+                          : model_.mergeCostWithin(H.unit, G.unit, limit);
+            c.lo = gLow ? G.key : H.key;
+            c.hi = gLow ? H.key : G.key;
+            if (c.cost > budget || (best.partner != kNone && !keyLess(c, best))) continue;
+            best.cost = c.cost;
+            best.lo = c.lo;
+            best.hi = c.hi;
+            best.partner = h;
         }
         return best;
     }
@@ -337,6 +346,7 @@ private:
     Graph graph_; // neighbour graph over the units
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
+    std::vector<std::uint32_t> candidates_; // cheapestNeighbour's scratch
 };
 
 double lowerMedian(std::vector<double> costs) {

@@ -57,10 +57,12 @@
 //
 // Complexity (fast implementation): per level, a BVH forest over the units (MergeBvh.h) gives
 // the sampled best() by branch and bound (CostBounds.h BoundQuery); at rebuilds the neighbour
-// lists come from one dual-tree self-join pruned with pairBoundExceeds. Merging then only
-// touches the graph: a priority queue (heapified at once from every unit's cheapest neighbour)
-// holds each group's cheapest neighbour pair and is invalidated lazily (an entry whose partner
-// has since merged is recomputed when it reaches the top). A popped entry whose two groups are
+// lists come from one dual-tree self-join pruned with the same bound on single-precision
+// regions (CostBounds.h PackedPairTest; a BVH leaf against a subtree descends item by item).
+// Merging then only touches the graph: a priority queue (heapified at once from every unit's
+// cheapest neighbour) holds each group's cheapest neighbour pair and is invalidated lazily (an
+// entry whose partner has since merged is recomputed when it reaches the top; the adjacent
+// groups are gathered and prefetched before they are costed). A popped entry whose two groups are
 // alive is the global minimum: every live qualifying pair is covered by an entry of one of its
 // groups with a key no larger than its own. Every pair cost that only has to be compared with
 // a limit (the budget, the best found so far) goes through CostModel::mergeCostWithin, which

@@ -1,24 +1,29 @@
-// Median-split BVH forest for best-partner queries (see MergeBvh.h).
+// Median-split BVH forest for best-partner queries and the self-join (see MergeBvh.h).
 #include "pipeline/cluster/MergeBvh.h"
 
-#include <limits>
 #include <numeric>
 
 namespace hlod {
 
 namespace {
 
-constexpr std::uint32_t kLeafSize = 2;
+constexpr std::uint32_t kLeafSize = 4;
 
 } // namespace
 
-void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass) {
+void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
+                     bool boxModel) {
     const auto n = static_cast<std::uint32_t>(items.size());
+    boxModel_ = boxModel;
     nodes_.clear();
+    nodeExtra_.clear();
     roots_.clear();
     order_.resize(n);
+    ordered_.resize(n);
+    orderedExtra_.resize(boxModel_ ? n : 0);
     if (n == 0) return;
     nodes_.reserve(2 * (n / kLeafSize + 1) + 64);
+    if (boxModel_) nodeExtra_.reserve(nodes_.capacity());
     std::vector<glm::dvec3> centers(n);
     for (std::uint32_t i = 0; i < n; ++i)
         centers[i] = items[i].box.center();
@@ -34,9 +39,10 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
         roots_.push_back(buildRange(begin, end, items, centers));
         begin = end;
     }
-    ordered_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        ordered_[i] = items[order_[i]];
+    PackedExtra unused{};
+    for (std::uint32_t i = 0; i < n; ++i) {
+        packRegion(items[order_[i]], boxModel_, ordered_[i], boxModel_ ? orderedExtra_[i] : unused);
+    }
 }
 
 std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
@@ -44,12 +50,15 @@ std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                                    const std::vector<glm::dvec3>& centers) {
     const auto id = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back(Node{});
+    if (boxModel_) nodeExtra_.emplace_back();
+    PackedExtra unused{};
+    PackedExtra& extra = boxModel_ ? nodeExtra_[id] : unused;
     if (end - begin <= kLeafSize) {
         Region region = emptyRegion();
         for (std::uint32_t i = begin; i < end; ++i) {
             includeRegion(region, items[order_[i]]);
         }
-        nodes_[id].region = region;
+        packRegion(region, boxModel_, nodes_[id].region, extra);
         nodes_[id].first = begin;
         nodes_[id].count = end - begin;
         return id;
@@ -69,12 +78,13 @@ std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                      });
     const std::uint32_t left = buildRange(begin, mid, items, centers);
     const std::uint32_t right = buildRange(mid, end, items, centers);
-    // The region bottom-up from the children (one merge per node, not one per item and depth).
-    Region region = nodes_[left].region;
-    includeRegion(region, nodes_[right].region);
-    nodes_[id].region = region;
-    nodes_[id].first = left;
-    nodes_[id].second = right;
+    // The region bottom-up from the children (one merge per node, not one per item and
+    // depth); the children's packed regions are floats already, so packing their union is
+    // exact. nodeExtra_ may have grown: take the slot again.
+    Region region = unpackRegion(nodeRef(left));
+    includeRegion(region, unpackRegion(nodeRef(right)));
+    packRegion(region, boxModel_, nodes_[id].region, boxModel_ ? nodeExtra_[id] : unused);
+    nodes_[id].first = right;
     return id;
 }
 

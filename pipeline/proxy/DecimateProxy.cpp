@@ -5,7 +5,6 @@
 
 #include "pipeline/proxy/PartwiseSimplify.h"
 #include "pipeline/proxy/ProxyFinish.h"
-#include "pipeline/proxy/SmallParts.h"
 #include "pipeline/proxy/Weld.h"
 
 namespace hlod {
@@ -28,8 +27,8 @@ std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxErro
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options) {
     const auto e = static_cast<float>(maxError);
     weldVertices(input, e * options.weldFraction);
-    dropSmallParts(input, e);
-    input.indices = simplifyPartsWithinError(input, maxError * options.simplifyFraction);
+    // Parts below e are dropped (SmallParts.h) in the same pass over the connected parts.
+    input.indices = simplifyPartsWithinError(input, maxError * options.simplifyFraction, e);
     compactMesh(input);
     finishProxy(input);
     return input;

@@ -23,7 +23,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 2;
+constexpr std::uint64_t kBakeFormatVersion = 3;
 
 // Children before parents, only nodes reachable from the root.
 std::vector<Id> postOrder(const ClusterTree& tree) {

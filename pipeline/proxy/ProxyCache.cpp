@@ -58,7 +58,8 @@ std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) 
     const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.positions.empty();
     out.reserve(kHeaderBytes + mesh.positions.size() * (normals ? 28 : 16) +
                 mesh.indices.size() * 4 + 8);
-    out.insert(out.end(), kMagic, kMagic + 8);
+    out.resize(sizeof kMagic);
+    std::memcpy(out.data(), kMagic, sizeof kMagic);
     put(out, kVersion);
     put(out, normals ? kHasNormals : 0u);
     put(out, key);

@@ -124,9 +124,11 @@ private:
 void weldVertices(ProxyMesh& mesh, float tolerance) {
     const std::size_t n = mesh.positions.size();
     if (n == 0) return;
-    // Cells twice the tolerance wide: the vertices within `tolerance` of a point lie in at most
-    // two cells per axis, so a vertex near a cell wall still finds its twin in the next cell.
-    const double inverseCell = tolerance > 0.0f ? 0.5 / static_cast<double>(tolerance) : 0.0;
+    // Cells four times the tolerance wide: the vertices within `tolerance` of a point lie in at
+    // most two cells per axis (a vertex near a cell wall still finds its twin in the next
+    // cell), and in one cell for the half of the positions away from the walls, so a vertex
+    // probes 1.5^3 = 3.4 cells on average (2^3 = 8 with cells twice the tolerance wide).
+    const double inverseCell = tolerance > 0.0f ? 0.25 / static_cast<double>(tolerance) : 0.0;
     KeyTable table(n);
     std::vector<std::uint32_t> representative, next, remap(n, kUnset);
     representative.reserve(n);
@@ -140,12 +142,12 @@ void weldVertices(ProxyMesh& mesh, float tolerance) {
         } else {
             const glm::vec3& p = mesh.positions[v];
             const glm::vec3 lo = p - glm::vec3(tolerance), hi = p + glm::vec3(tolerance);
-            for (std::int64_t x = cellOf(lo.x, inverseCell);
-                 x <= cellOf(hi.x, inverseCell) && found == kUnset; ++x) {
-                for (std::int64_t y = cellOf(lo.y, inverseCell);
-                     y <= cellOf(hi.y, inverseCell) && found == kUnset; ++y) {
-                    for (std::int64_t z = cellOf(lo.z, inverseCell);
-                         z <= cellOf(hi.z, inverseCell) && found == kUnset; ++z) {
+            const std::int64_t x0 = cellOf(lo.x, inverseCell), x1 = cellOf(hi.x, inverseCell);
+            const std::int64_t y0 = cellOf(lo.y, inverseCell), y1 = cellOf(hi.y, inverseCell);
+            const std::int64_t z0 = cellOf(lo.z, inverseCell), z1 = cellOf(hi.z, inverseCell);
+            for (std::int64_t x = x0; x <= x1 && found == kUnset; ++x) {
+                for (std::int64_t y = y0; y <= y1 && found == kUnset; ++y) {
+                    for (std::int64_t z = z0; z <= z1 && found == kUnset; ++z) {
                         const CellKey probe{x, y, z, key.color};
                         for (std::uint32_t r = table.head(probe); r != kUnset; r = next[r]) {
                             const glm::vec3 delta = glm::abs(mesh.positions[representative[r]] - p);

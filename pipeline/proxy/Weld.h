@@ -1,6 +1,6 @@
 // Vertex welding of an aggregated proxy input: a vertex whose colour equals that of an earlier
 // vertex and whose position is within `tolerance` of it on every axis becomes that vertex (the
-// first one in index order keeps its position). A hash grid of cells 2 * tolerance wide finds
+// first one in index order keeps its position). A hash grid of cells 4 * tolerance wide finds
 // the candidates, neighbouring cells included, so twins straddling a cell wall still weld.
 // Triangles that become degenerate (two equal corners) are removed and unreferenced vertices
 // dropped.

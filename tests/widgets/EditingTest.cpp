@@ -23,6 +23,7 @@
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/ExportDialog.h"
 #include "widgets/StudioModel.h"
+#include "widgets/doc/AutoRebuild.h"
 #include "widgets/doc/ProjectSession.h"
 #include "widgets/params/BuildParameters.h"
 #include "widgets/params/ParameterPanel.h"
@@ -140,21 +141,13 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
     EXPECT_EQ(session.autosaveTimer()->interval(), 120000);
 }
 
-// Waits for the model's running build; true when it finished.
-bool waitForBuild(StudioModel& model) {
-    QSignalSpy finished(&model, &StudioModel::buildFinished);
-    if (!model.building()) return false;
-    return finished.wait(120000);
-}
-
 TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     const BuiltHlod& sample = test::sampleBuild();
     ProjectSession session;
     Document& doc = session.document();
     StudioModel model;
     model.setDocument(&doc);
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(doc.bakeNode(), "cache", false)));
+    ASSERT_TRUE(test::useTestBakeParameters(session));
     model.setScene(sample.scene);
     model.setBuilt(sample);
     ClusterTreeModel treeModel;
@@ -162,6 +155,8 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     tree.setModel(&treeModel);
     treeModel.setBuild(sample.scene, sample.build);
     ClusterEditActions edits(&session, &model, &tree, &treeModel);
+    AutoRebuild rebuild(&session, &model);
+    rebuild.setDelay(0);
 
     const QModelIndex root = treeModel.index(0, 0);
     ASSERT_GE(treeModel.rowCount(root), 2);
@@ -182,7 +177,7 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     const HandEdits& now = doc.graph().node(doc.clusterNode()).edits;
     ASSERT_EQ(now.locked.size(), 1u);
     EXPECT_EQ(now.locked[0], merged);
-    ASSERT_TRUE(waitForBuild(model)); // the merge rebuilt the HLOD
+    ASSERT_TRUE(test::waitForBuild(model)); // the merge rebuilt the HLOD
     const ClusterTree& after = model.built().build->tree;
     const Id group = findCluster(after, merged);
     ASSERT_NE(group, kNoId); // the merged clusters are exactly one subtree
@@ -191,9 +186,9 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
 
     session.undo()->stack()->undo();
     EXPECT_TRUE(doc.graph().node(doc.clusterNode()).edits.empty());
-    ASSERT_TRUE(waitForBuild(model)); // undo rebuilds without the lock
+    ASSERT_TRUE(test::waitForBuild(model)); // undo rebuilds without the lock
     EXPECT_TRUE(model.built().build->settings.cluster.lockedGroups.empty());
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Proxy cache"));
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Threads"));
 }
 
 TEST(Editing, ExportDialogWritesThePackage) {

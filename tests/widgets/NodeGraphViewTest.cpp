@@ -51,5 +51,38 @@ TEST(NodeGraphView, DraggingFromAnOutputToAnInputRequestsAConnection) {
     EXPECT_EQ(selected.at(0).at(0).value<quint32>(), extra);
 }
 
+TEST(NodeGraphView, StatusOverridesWinOverTheGraphsRunState) {
+    PipelineGraph g = PipelineGraph::makeDefault();
+    NodeGraphView view;
+    view.setGraph(&g);
+    EXPECT_EQ(view.shownStatus(2), NodeStatus::Pending);
+    view.setStatuses({{2, NodeStatus::Failed}}, {{2, QStringLiteral("out of memory")}});
+    EXPECT_EQ(view.shownStatus(2), NodeStatus::Failed);
+    EXPECT_EQ(view.shownStatus(3), NodeStatus::Pending); // no override: the graph's
+    auto* header = static_cast<QGraphicsRectItem*>(view.nodeItem(2)->childItems().at(0));
+    EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Failed));
+    EXPECT_EQ(view.nodeItem(2)->toolTip(), QStringLiteral("out of memory"));
+    view.refresh(); // redrawing keeps the overrides
+    header = static_cast<QGraphicsRectItem*>(view.nodeItem(2)->childItems().at(0));
+    EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Failed));
+}
+
+TEST(NodeGraphView, SelectionSurvivesARedrawAndConnectionsAreFoundUnderTheCursor) {
+    PipelineGraph g = PipelineGraph::makeDefault();
+    NodeGraphView view;
+    view.setGraph(&g);
+    view.selectNode(3);
+    view.refresh();
+    EXPECT_EQ(view.selectedNode(), 3u);
+    EXPECT_TRUE(view.nodeItem(3)->isSelected());
+    // Halfway between Cluster's output and Bake's input lies their connection's curve.
+    const QPointF mid = (view.portPosition(2, true, 0) + view.portPosition(3, false, 0)) / 2.0;
+    EXPECT_EQ(view.connectionAt(mid), (Connection{2, 0, 3, 0}));
+    EXPECT_EQ(view.connectionAt(mid + QPointF(0, 60)).from, kNoNode);
+    g.removeNode(3);
+    view.refresh();
+    EXPECT_EQ(view.selectedNode(), kNoNode); // a removed node is not selected any more
+}
+
 } // namespace
 } // namespace hlod::widgets

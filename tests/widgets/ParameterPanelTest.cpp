@@ -9,6 +9,7 @@
 #include <QSlider>
 #include <QSpinBox>
 
+#include "pipeline/graph/Parameters.h"
 #include "widgets/params/ParameterPanel.h"
 
 namespace hlod::widgets {
@@ -71,6 +72,35 @@ TEST(ParameterPanel, ASliderDragIsOneUndoStep) {
     EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(doc.clusterNode()).params, "k"), 4.0);
     undo.stack()->undo();
     EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(doc.clusterNode()).params, "k"), 1.0);
+}
+
+TEST(ParameterPanel, WideRangesGetALogarithmicSlider) {
+    // S spans 1 to 100000 px (five decades): each decade is a fifth of the slider, so the
+    // default 300 px sits near the middle (log10(300) / 5 = 0.495) instead of at 0.3 %.
+    const ParamDecl& size = parameterDeclaration("screen_size");
+    ASSERT_TRUE(ParameterPanel::logarithmicSlider(size));
+    EXPECT_FALSE(ParameterPanel::logarithmicSlider(parameterDeclaration("k"))); // 0..16
+    EXPECT_EQ(ParameterPanel::sliderPosition(size, 300.0), 495);
+    EXPECT_EQ(ParameterPanel::sliderValue(size, 0), 1.0);
+    EXPECT_EQ(ParameterPanel::sliderValue(size, 1000), 100000.0);
+    EXPECT_EQ(ParameterPanel::sliderValue(size, 600), 1000.0);       // 10^(0.6 * 5)
+    EXPECT_DOUBLE_EQ(ParameterPanel::sliderValue(size, 495), 299.0); // 298.5: 3 digits
+    EXPECT_EQ(ParameterPanel::sliderPosition(size, 1000.0), 600);
+
+    Document doc;
+    UndoAdapter undo(doc);
+    ParameterPanel panel(undo);
+    panel.setNode(doc.bakeNode());
+    auto* slider = panel.findChild<QSlider*>(QStringLiteral("param_screen_size_slider"));
+    auto* spin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
+    ASSERT_NE(slider, nullptr);
+    EXPECT_EQ(slider->value(), 495);
+    slider->setValue(600);
+    EXPECT_EQ(paramNumber(doc.graph().node(doc.bakeNode()).params, "screen_size"), 1000.0);
+    EXPECT_EQ(spin->value(), 1000.0);
+    spin->setValue(50.0); // typing a value moves the slider to its decade
+    EXPECT_EQ(slider->value(), ParameterPanel::sliderPosition(size, 50.0));
+    EXPECT_EQ(doc.history().count(), 2u);
 }
 
 } // namespace

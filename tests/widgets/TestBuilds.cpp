@@ -1,10 +1,14 @@
 // Synchronous HLOD builds for the widget tests (see TestBuilds.h).
 #include "TestBuilds.h"
 
+#include <QSignalSpy>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "pipeline/doc/Commands.h"
 #include "pipeline/io/SampleScene.h"
 #include "pipeline/scene/Primitives.h"
+#include "widgets/StudioModel.h"
+#include "widgets/doc/ProjectSession.h"
 
 namespace hlod::widgets::test {
 
@@ -49,6 +53,21 @@ Scene makeCubeRow() {
 const BuiltHlod& sampleBuild() {
     static const BuiltHlod built = buildNow(std::make_shared<const Scene>(makeSampleScene()));
     return built;
+}
+
+bool useTestBakeParameters(ProjectSession& session) {
+    const NodeId bake = session.document().bakeNode();
+    return session.undo()->execute(std::make_unique<SetParameter>(bake, "cache", false)) &&
+           session.undo()->execute(std::make_unique<SetParameter>(bake, "threads", 2));
+}
+
+bool waitForBuild(StudioModel& model) {
+    QSignalSpy finished(&model, &StudioModel::buildFinished);
+    if (!model.building()) {
+        QSignalSpy started(&model, &StudioModel::buildStarted);
+        if (!started.wait(5000)) return false;
+    }
+    return !finished.isEmpty() || finished.wait(120000);
 }
 
 } // namespace hlod::widgets::test

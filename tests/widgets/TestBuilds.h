@@ -7,6 +7,11 @@
 #include "pipeline/doc/HlodBuild.h"
 #include "widgets/HlodBuilder.h"
 
+namespace hlod::widgets {
+class ProjectSession;
+class StudioModel;
+} // namespace hlod::widgets
+
 namespace hlod::widgets::test {
 
 // Sphere clustering, decimate proxies, S = 300 px, two threads, no disk cache.
@@ -22,5 +27,13 @@ Scene makeCubeRow();
 
 // The embedded sample scene and its build, made once per test run (about two seconds).
 const BuiltHlod& sampleBuild();
+
+// Sets the document's bake parameters to testSettings()' (no disk cache, two threads) through
+// undoable commands, so an unedited rebuild of the sample gives sampleBuild()'s tree.
+bool useTestBakeParameters(ProjectSession& session);
+
+// Waits for the next build of `model` to start (AutoRebuild's timer) and finish; true when it
+// finished within two minutes.
+bool waitForBuild(StudioModel& model);
 
 } // namespace hlod::widgets::test

@@ -10,10 +10,19 @@ namespace hlod::widgets {
 
 HlodSettings settingsOf(const Document& doc) {
     const PipelineGraph& g = doc.graph();
-    const GraphNode& cluster = g.node(doc.clusterNode());
-    const GraphNode& bake = g.node(doc.bakeNode());
-    HlodSettings s = hlodSettingsFrom(cluster.params, bake.params);
-    applyConstraints(cluster.edits, s.cluster);
+    // A graph edited down to no Cluster or Bake node builds with that stage's defaults.
+    const NodeId clusterId = doc.clusterNode();
+    const NodeId bakeId = doc.bakeNode();
+    const ParamValues clusterParams =
+        clusterId == kNoNode ? defaultValues(NodeKind::Cluster) : g.node(clusterId).params;
+    const ParamValues bakeParams =
+        bakeId == kNoNode ? defaultValues(NodeKind::Bake) : g.node(bakeId).params;
+    HlodSettings s = hlodSettingsFrom(clusterParams, bakeParams);
+    if (clusterId != kNoNode) {
+        const HandEdits& edits = g.node(clusterId).edits;
+        applyConstraints(edits, s.cluster);
+        s.dissolved = edits.dissolved;
+    }
     return s;
 }
 

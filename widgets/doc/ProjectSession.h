@@ -83,8 +83,8 @@ private:
     QTimer* timer_ = nullptr;
 };
 
-// The HlodSettings of a document: its first Cluster and Bake nodes' parameters with the hand
-// edits' locked groups and exclusions applied.
+// The HlodSettings of a document: its first Cluster and Bake nodes' parameters (defaults for a
+// missing node) with the hand edits applied: locked groups, exclusions and split clusters.
 HlodSettings settingsOf(const Document& doc);
 
 } // namespace hlod::widgets

@@ -2,6 +2,7 @@
 #include "widgets/graph/NodeGraphView.h"
 
 #include <QBrush>
+#include <QContextMenuEvent>
 #include <QGraphicsEllipseItem>
 #include <QGraphicsLineItem>
 #include <QGraphicsPathItem>
@@ -9,8 +10,10 @@
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPainterPath>
+#include <QPainterPathStroker>
 #include <QPen>
 
 namespace hlod::widgets {
@@ -37,10 +40,34 @@ double boxHeight(NodeKind kind) {
     return NodeGraphView::kHeaderHeight + NodeGraphView::kPortSpacing * (double(ports) + 0.5);
 }
 
-QString title(const GraphNode& n) {
-    QString t = QString::fromLatin1(toString(n.kind));
-    t[0] = t[0].toUpper();
-    return t + QStringLiteral(" #") + QString::number(n.id);
+QString kindName(NodeKind kind) {
+    switch (kind) {
+    case NodeKind::Import:
+        return NodeGraphView::tr("Import");
+    case NodeKind::Cluster:
+        return NodeGraphView::tr("Cluster");
+    case NodeKind::Bake:
+        return NodeGraphView::tr("Bake");
+    case NodeKind::Export:
+        return NodeGraphView::tr("Export");
+    }
+    return {};
+}
+
+QString title(const GraphNode& n) { return kindName(n.kind) + QStringLiteral(" #%1").arg(n.id); }
+
+QString statusName(NodeStatus s) {
+    switch (s) {
+    case NodeStatus::UpToDate:
+        return NodeGraphView::tr("up to date");
+    case NodeStatus::Pending:
+        return NodeGraphView::tr("pending");
+    case NodeStatus::Running:
+        return NodeGraphView::tr("running");
+    case NodeStatus::Failed:
+        return NodeGraphView::tr("failed");
+    }
+    return {};
 }
 
 } // namespace
@@ -49,6 +76,8 @@ NodeGraphView::NodeGraphView(QWidget* parent) : QGraphicsView(parent) {
     setScene(new QGraphicsScene(this));
     setRenderHint(QPainter::Antialiasing);
     setDragMode(QGraphicsView::NoDrag);
+    setBackgroundBrush(QColor(228, 230, 234));
+    setAlignment(Qt::AlignCenter);
 }
 
 QColor NodeGraphView::statusColor(NodeStatus status) {
@@ -85,13 +114,60 @@ void NodeGraphView::refresh() {
     scene()->clear();
     boxes_.clear();
     headers_.clear();
+    statusTexts_.clear();
+    curves_.clear();
     rubber_ = nullptr;
+    movingNode_ = kNoNode;
     if (!graph_) return;
     for (NodeId id : graph_->nodeIds())
         addNodeItem(graph_->node(id));
     for (const Connection& c : graph_->connections())
         addConnectionItem(c);
+    if (selected_ != kNoNode && !graph_->hasNode(selected_)) selected_ = kNoNode;
+    if (selected_ != kNoNode) boxes_[selected_]->setSelected(true);
     setStatusOnly();
+    fitGraph();
+}
+
+void NodeGraphView::fitGraph() {
+    if (boxes_.empty()) return;
+    const QRectF rect = scene()->itemsBoundingRect().adjusted(-24, -24, 24, 24);
+    setSceneRect(rect);
+    resetTransform();
+    const QSize room = viewport()->size();
+    if (rect.width() > room.width() || rect.height() > room.height())
+        fitInView(rect, Qt::KeepAspectRatio);
+}
+
+void NodeGraphView::resizeEvent(QResizeEvent* event) {
+    QGraphicsView::resizeEvent(event);
+    fitGraph();
+}
+
+void NodeGraphView::selectNode(NodeId node) {
+    selected_ = boxes_.count(node) ? node : kNoNode;
+    scene()->clearSelection();
+    if (selected_ != kNoNode) boxes_[selected_]->setSelected(true);
+}
+
+void NodeGraphView::setStatuses(std::map<NodeId, NodeStatus> statuses,
+                                std::map<NodeId, QString> messages) {
+    statuses_ = std::move(statuses);
+    messages_ = std::move(messages);
+    setStatusOnly();
+}
+
+NodeStatus NodeGraphView::shownStatus(NodeId node) const {
+    if (auto it = statuses_.find(node); it != statuses_.end()) return it->second;
+    return graph_ && graph_->hasNode(node) ? graph_->status(node) : NodeStatus::Pending;
+}
+
+Connection NodeGraphView::connectionAt(const QPointF& p) const {
+    QPainterPathStroker stroker;
+    stroker.setWidth(10.0);
+    for (const auto& [c, item] : curves_)
+        if (stroker.createStroke(item->path()).contains(p)) return c;
+    return {};
 }
 
 void NodeGraphView::addNodeItem(const GraphNode& n) {
@@ -103,7 +179,14 @@ void NodeGraphView::addNodeItem(const GraphNode& n) {
     auto* header = new QGraphicsRectItem(0, 0, kNodeWidth, kHeaderHeight, box);
     header->setPen(Qt::NoPen);
     auto* text = new QGraphicsSimpleTextItem(title(n), header);
-    text->setPos(8, 4);
+    text->setBrush(Qt::white);
+    QFont bold = text->font();
+    bold.setBold(true);
+    text->setFont(bold);
+    text->setPos(8, (kHeaderHeight - text->boundingRect().height()) / 2);
+    auto* status = new QGraphicsSimpleTextItem(header);
+    status->setBrush(QColor(255, 255, 255, 230));
+    statusTexts_[n.id] = status;
     auto addPorts = [&](const std::vector<Port>& ports, bool output) {
         for (std::size_t i = 0; i < ports.size(); ++i) {
             const double y = kHeaderHeight + kPortSpacing * (double(i) + 0.75);
@@ -132,17 +215,25 @@ void NodeGraphView::addConnectionItem(const Connection& c) {
     const PortType t = outputPorts(graph_->node(c.from).kind)[c.fromPort].type;
     auto* item = scene()->addPath(path, QPen(portColor(t), 2.0));
     item->setZValue(-1);
+    curves_.emplace_back(c, item);
 }
 
 void NodeGraphView::setStatusOnly() {
     if (!graph_) return;
     for (auto& [id, header] : headers_) {
         if (!graph_->hasNode(id)) continue;
-        const NodeStatus s = graph_->status(id);
+        const NodeStatus s = shownStatus(id);
         header->setBrush(statusColor(s));
-        const QString tip = s == NodeStatus::Failed ? QString::fromStdString(graph_->error(id))
-                                                    : QString::fromLatin1(toString(s));
+        QString tip = statusName(s);
+        if (auto it = messages_.find(id); it != messages_.end() && !it->second.isEmpty())
+            tip = it->second;
+        else if (s == NodeStatus::Failed && !statuses_.count(id))
+            tip = QString::fromStdString(graph_->error(id));
         boxes_[id]->setToolTip(tip);
+        QGraphicsSimpleTextItem* text = statusTexts_[id];
+        text->setText(statusName(s));
+        text->setPos(kNodeWidth - text->boundingRect().width() - 8,
+                     (kHeaderHeight - text->boundingRect().height()) / 2);
     }
 }
 
@@ -178,13 +269,13 @@ void NodeGraphView::mousePressEvent(QMouseEvent* event) {
             return;
         }
         if (const NodeId id = nodeAt(p); id != kNoNode) {
-            scene()->clearSelection();
-            boxes_[id]->setSelected(true);
+            selectNode(id);
             movingNode_ = id;
             moveStart_ = p;
             Q_EMIT nodeSelected(id);
             return;
         }
+        selectNode(kNoNode); // a click on the background
     }
     QGraphicsView::mousePressEvent(event);
 }
@@ -226,13 +317,32 @@ void NodeGraphView::mouseReleaseEvent(QMouseEvent* event) {
     QGraphicsView::mouseReleaseEvent(event);
 }
 
+void NodeGraphView::contextMenuEvent(QContextMenuEvent* event) {
+    if (!graph_) return;
+    const QPointF p = mapToScene(event->pos());
+    QMenu menu(this);
+    if (const NodeId id = nodeAt(p); id != kNoNode) {
+        selectNode(id);
+        Q_EMIT nodeSelected(id);
+        menu.addAction(tr("&Remove %1").arg(title(graph_->node(id))), this,
+                       [this, id] { Q_EMIT removeRequested(id); });
+    } else if (const Connection c = connectionAt(p); c.from != kNoNode) {
+        menu.addAction(tr("&Disconnect"), this, [this, c] { Q_EMIT disconnectRequested(c); });
+    } else {
+        for (NodeKind kind :
+             {NodeKind::Import, NodeKind::Cluster, NodeKind::Bake, NodeKind::Export})
+            menu.addAction(tr("Add %1 Node").arg(kindName(kind)), this, [this, kind, p] {
+                Q_EMIT addRequested(static_cast<int>(kind), p.x(), p.y());
+            });
+    }
+    menu.exec(event->globalPos());
+}
+
 void NodeGraphView::keyPressEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) {
-        for (const auto& [id, box] : boxes_) {
-            if (box->isSelected()) {
-                Q_EMIT removeRequested(id);
-                return;
-            }
+        if (selected_ != kNoNode) {
+            Q_EMIT removeRequested(selected_);
+            return;
         }
     }
     QGraphicsView::keyPressEvent(event);

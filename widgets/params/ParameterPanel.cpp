@@ -23,15 +23,34 @@ namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
-int sliderPosition(const ParamDecl& d, double value) {
-    if (d.max <= d.min) return 0;
-    const double t = (value - d.min) / (d.max - d.min);
-    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * ParameterPanel::kSliderSteps));
+// Rounds to three significant digits: a logarithmic slider gives 302 px, not 301.995 px.
+double roundSignificant(double v) {
+    if (v <= 0.0) return v;
+    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
+    return std::round(v / scale) * scale;
 }
 
-double sliderValue(const ParamDecl& d, int position) {
-    return d.min + (d.max - d.min) * position / static_cast<double>(ParameterPanel::kSliderSteps);
+} // namespace
+
+bool ParameterPanel::logarithmicSlider(const ParamDecl& d) {
+    return d.min > 0.0 && d.max / d.min >= kLogRatio;
 }
+
+int ParameterPanel::sliderPosition(const ParamDecl& d, double value) {
+    if (d.max <= d.min) return 0;
+    const double t = logarithmicSlider(d)
+                         ? std::log(std::max(value, d.min) / d.min) / std::log(d.max / d.min)
+                         : (value - d.min) / (d.max - d.min);
+    return static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps));
+}
+
+double ParameterPanel::sliderValue(const ParamDecl& d, int position) {
+    const double t = position / static_cast<double>(kSliderSteps);
+    if (!logarithmicSlider(d)) return d.min + (d.max - d.min) * t;
+    return std::clamp(roundSignificant(d.min * std::pow(d.max / d.min, t)), d.min, d.max);
+}
+
+namespace {
 
 int decimalsFor(const ParamDecl& d) {
     // Enough digits for the smallest meaningful value of the range (0.01 px, 1e-6 x diagonal).

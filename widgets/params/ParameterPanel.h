@@ -11,6 +11,7 @@
 // arrow steps (no keyboard tracking). Call refresh() when the document changed from elsewhere
 // (the UndoAdapter's documentChanged does it when connected with connectTo()).
 //
+// Sliders: see kSliderSteps.
 // Object names for tests and style sheets: each editor is named "param_<key>" (the slider
 // "param_<key>_slider").
 #pragma once
@@ -40,8 +41,15 @@ public:
     // Re-reads every value from the document (editors keep their focus; no commands).
     void refresh();
 
-    // Slider positions per unit of value: a slider has kSliderSteps steps over [min, max].
+    // A slider has kSliderSteps steps over [min, max]: linear, or logarithmic when the range
+    // spans kLogRatio or more (min > 0; the screen size S, 1 to 100000 px, and the pixel error):
+    // then every decade gets the same length and values are rounded to three significant digits
+    // (S = 300 px sits at 50 % of the slider, not at 0.3 %).
     static constexpr int kSliderSteps = 1000;
+    static constexpr double kLogRatio = 1000.0;
+    static bool logarithmicSlider(const ParamDecl& decl);
+    static int sliderPosition(const ParamDecl& decl, double value);
+    static double sliderValue(const ParamDecl& decl, int position);
 
 private:
     void rebuild();

@@ -148,7 +148,9 @@ TEST(PartwiseSimplify, EachPartStaysWithinTheBudgetOfItsOwnInput) {
     for (std::size_t t = 0; t < out.size(); t += 3) {
         // Parts come out in the order of their first input triangle: sphere 0 first.
         const int which = both.positions[out[t]].x > 2.0f ? 1 : 0;
-        if (which == 0) EXPECT_TRUE(parts[1].indices.empty()) << "sphere 0 after sphere 1";
+        if (which == 0) {
+            EXPECT_TRUE(parts[1].indices.empty()) << "sphere 0 after sphere 1";
+        }
         for (int k = 0; k < 3; ++k) {
             parts[which].indices.push_back(
                 static_cast<std::uint32_t>(parts[which].positions.size()));

@@ -1,0 +1,358 @@
+// Tests of widgets/compare (the side-by-side comparison of issue #7) with real viewports (Mesa
+// under xvfb-run): both sides build in the background and preview, the cameras are linked both
+// ways, the table shows each side's build and frame, one side's selector rebuilds that side
+// only, cancel leaves no result, closing mid-build is safe, "Use These Settings" is one undo
+// step, and the configuration text forms of --compare.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+#include <vtkCamera.h>
+
+#include "TestBuilds.h"
+#include "TestScenes.h"
+#include "pipeline/core/Error.h"
+#include "pipeline/graph/Parameters.h"
+#include "widgets/DisplayController.h"
+#include "widgets/GlSupport.h"
+#include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
+#include "widgets/compare/CameraLink.h"
+#include "widgets/compare/CompareConfig.h"
+#include "widgets/compare/ComparePane.h"
+#include "widgets/compare/CompareTable.h"
+#include "widgets/compare/CompareView.h"
+#include "widgets/compare/UseConfiguration.h"
+#include "widgets/doc/ProjectSession.h"
+
+namespace hlod::widgets {
+namespace {
+
+constexpr int kBuildTimeoutMs = 120000;
+
+CompareConfig config(VolumeType volume, double k = 1.0, double screenSize = 300.0) {
+    CompareConfig c;
+    c.volume = volume;
+    c.k = k;
+    c.screenSize = screenSize;
+    return c;
+}
+
+// Waits until `pane` leaves the Building state; true when it did in time.
+bool waitUntilIdle(ComparePane& pane) {
+    QSignalSpy changed(&pane, &ComparePane::stateChanged);
+    while (pane.building())
+        if (!changed.wait(kBuildTimeoutMs)) return false;
+    return true;
+}
+
+class CompareViewTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const GlProbeResult gl = probeOpenGl();
+        ASSERT_TRUE(gl.ok) << gl.problem.toStdString();
+        view = std::make_unique<CompareView>();
+        view->resize(1000, 640);
+        view->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(view.get()));
+    }
+
+    // Opens the sample scene as sphere (left) against AABB k=2 (right) and waits for both.
+    void openSample() {
+        view->open(test::sampleBuild().scene, test::testSettings(),
+                   {config(VolumeType::Sphere), config(VolumeType::Aabb, 2.0)});
+        view->fitView();
+        ASSERT_TRUE(waitUntilIdle(*view->left()));
+        ASSERT_TRUE(waitUntilIdle(*view->right()));
+        ASSERT_TRUE(view->allBuilt());
+        // Render both: the previews and the frame rows of the table follow the camera.
+        view->left()->viewport()->grabFrame();
+        view->right()->viewport()->grabFrame();
+    }
+
+    std::unique_ptr<CompareView> view;
+};
+
+TEST_F(CompareViewTest, BothSidesBuildInTheBackgroundAndShowTheirPreview) {
+    QSignalSpy finished(view.get(), &CompareView::buildsFinished);
+    view->open(test::sampleBuild().scene, test::testSettings(),
+               {config(VolumeType::Sphere), config(VolumeType::Aabb, 2.0)});
+    view->fitView();
+    // Both sides are building at once, off the GUI thread (open returned).
+    EXPECT_TRUE(view->left()->building());
+    EXPECT_TRUE(view->right()->building());
+    const QImage emptyLeft = view->left()->viewport()->grabFrame();
+    const QImage emptyRight = view->right()->viewport()->grabFrame();
+    ASSERT_TRUE(waitUntilIdle(*view->left()));
+    ASSERT_TRUE(waitUntilIdle(*view->right()));
+    ASSERT_TRUE(view->allBuilt());
+    EXPECT_EQ(finished.count(), 1); // once, when the second side finished
+    // The status texts changed meanwhile; the views kept their size (and equal widths).
+    EXPECT_EQ(view->left()->viewport()->size(), emptyLeft.size() / emptyLeft.devicePixelRatio());
+    EXPECT_LE(std::abs(view->left()->viewport()->width() - view->right()->viewport()->width()), 1);
+    EXPECT_EQ(view->left()->viewport()->height(), view->right()->viewport()->height());
+
+    // Each side built its own configuration over the base settings.
+    const ClusterTree& sphere = view->left()->built()->build->tree;
+    const ClusterTree& aabb = view->right()->built()->build->tree;
+    EXPECT_EQ(sphere.volume, VolumeType::Sphere);
+    EXPECT_EQ(aabb.volume, VolumeType::Aabb);
+    EXPECT_EQ(aabb.k, 2.0);
+    EXPECT_EQ(view->right()->built()->build->settings.bake.method,
+              test::testSettings().bake.method);
+
+    for (ComparePane* pane : {view->left(), view->right()}) {
+        const QImage frame = pane->viewport()->grabFrame();
+        const QImage& empty = pane == view->left() ? emptyLeft : emptyRight;
+        // The fitted sample scene covers a good part of each view; before the build, nothing.
+        EXPECT_GT(test::foregroundShare(frame, empty), 0.05);
+        EXPECT_EQ(pane->model()->view().mode, DisplayMode::Hlod);
+        EXPECT_FALSE(pane->display()->drawList().empty());
+        EXPECT_GT(pane->display()->lastFrame().triangles, 0u);
+        EXPECT_TRUE(pane->display()->overlayText().startsWith(QStringLiteral("Draw calls: ")));
+    }
+}
+
+TEST_F(CompareViewTest, TableRowsAreEachSidesBuildAndFrameWithTheLowerHighlighted) {
+    openSample();
+    CompareTable* table = view->table();
+    for (ComparePane* pane : {view->left(), view->right()}) {
+        const auto side = pane == view->left() ? CompareTable::Left : CompareTable::Right;
+        const BuiltHlod& built = *pane->built();
+        EXPECT_EQ(table->value(CompareTable::NodesRow, side), built.build->tree.nodes.size());
+        EXPECT_EQ(table->value(CompareTable::ProxyTrianglesRow, side),
+                  built.build->bake.proxyTriangles);
+        EXPECT_EQ(table->value(CompareTable::PackageRow, side), built.hlod.bytes);
+        EXPECT_EQ(table->value(CompareTable::DrawCallsRow, side),
+                  pane->display()->lastFrame().drawCalls);
+        EXPECT_EQ(table->value(CompareTable::TrianglesRow, side),
+                  pane->display()->lastFrame().triangles);
+        EXPECT_EQ(table->item(CompareTable::NodesRow, side)->data(Qt::UserRole).toULongLong(),
+                  built.build->tree.nodes.size());
+    }
+    // The package holds the leaves' meshes plus the proxies: more than the proxies alone.
+    EXPECT_GT(*table->value(CompareTable::PackageRow, CompareTable::Left),
+              *table->value(CompareTable::ProxyTrianglesRow, CompareTable::Left));
+    for (int r = 0; r < CompareTable::RowCount; ++r) {
+        const auto row = static_cast<CompareTable::Row>(r);
+        const std::uint64_t l = *table->value(row, CompareTable::Left);
+        const std::uint64_t rv = *table->value(row, CompareTable::Right);
+        if (l == rv) {
+            EXPECT_FALSE(table->better(row).has_value());
+            continue;
+        }
+        const auto best = l < rv ? CompareTable::Left : CompareTable::Right;
+        EXPECT_EQ(table->better(row), best) << "row " << r;
+        EXPECT_TRUE(table->item(row, best)->font().bold());
+        EXPECT_FALSE(table->item(row, 1 - best)->font().bold());
+    }
+    EXPECT_EQ(table->horizontalHeaderItem(CompareTable::Right)->text(),
+              QStringLiteral("Right: AABB k=2"));
+}
+
+TEST_F(CompareViewTest, CamerasAreLinkedBothWaysWithoutEcho) {
+    openSample();
+    vtkCamera* left = view->left()->viewport()->camera();
+    vtkCamera* right = view->right()->viewport()->camera();
+    ASSERT_TRUE(CameraLink::samePose(left, right)); // fitted alike
+    const glm::dvec3 before(right->GetPosition()[0], right->GetPosition()[1],
+                            right->GetPosition()[2]);
+
+    view->left()->viewport()->orbit(40.0, 15.0);
+    EXPECT_TRUE(CameraLink::samePose(left, right));
+    const glm::dvec3 after(right->GetPosition()[0], right->GetPosition()[1],
+                           right->GetPosition()[2]);
+    EXPECT_GT(glm::length(after - before), 1e-3);
+
+    // Moving the right one moves the left one (both directions).
+    view->right()->viewport()->zoom(1.5);
+    EXPECT_TRUE(CameraLink::samePose(left, right));
+
+    // Rendering resets clipping ranges (camera modifications): that is no reason to copy.
+    const int copies = view->cameraLink()->copies();
+    view->left()->viewport()->grabFrame();
+    view->right()->viewport()->grabFrame();
+    EXPECT_EQ(view->cameraLink()->copies(), copies);
+    // Both LOD selections now run for the same camera.
+    EXPECT_EQ(view->left()->display()->currentCamera().eye,
+              view->right()->display()->currentCamera().eye);
+
+    // Unlinked, each side keeps its own camera.
+    view->linkBox()->setChecked(false);
+    view->left()->viewport()->orbit(-30.0, 0.0);
+    EXPECT_FALSE(CameraLink::samePose(left, right));
+    // Linked again, the right side catches up.
+    view->linkBox()->setChecked(true);
+    EXPECT_TRUE(CameraLink::samePose(left, right));
+}
+
+TEST_F(CompareViewTest, ChangingOneSidesVolumeRebuildsOnlyThatSide) {
+    openSample();
+    const std::shared_ptr<const HlodBuild> leftBuild = view->left()->built()->build;
+    QComboBox* volume = view->right()->volumeBox();
+    volume->setCurrentIndex(volume->findData(QStringLiteral("octree")));
+    EXPECT_TRUE(view->right()->building());
+    EXPECT_FALSE(view->left()->building());
+    EXPECT_EQ(view->right()->config().volume, VolumeType::Octree);
+    EXPECT_FALSE(view->right()->kBox()->isEnabled()); // k is for AABB only
+    ASSERT_TRUE(waitUntilIdle(*view->right()));
+    ASSERT_EQ(view->right()->state(), ComparePane::State::Built);
+    EXPECT_EQ(view->right()->built()->build->tree.volume, VolumeType::Octree);
+    EXPECT_EQ(view->left()->built()->build, leftBuild); // the left side was not touched
+    EXPECT_EQ(view->table()->value(CompareTable::NodesRow, CompareTable::Right),
+              view->right()->built()->build->tree.nodes.size());
+    EXPECT_EQ(view->table()->horizontalHeaderItem(CompareTable::Right)->text(),
+              QStringLiteral("Right: Octree"));
+}
+
+TEST_F(CompareViewTest, CancelLeavesNoResult) {
+    openSample();
+    view->right()->kBox()->setValue(1.0); // AABB k=1: a new build of the right side
+    ASSERT_TRUE(view->right()->building());
+    view->right()->cancelButton()->click();
+    ASSERT_TRUE(waitUntilIdle(*view->right()));
+    EXPECT_EQ(view->right()->state(), ComparePane::State::Cancelled);
+    EXPECT_EQ(view->right()->built(), nullptr);
+    EXPECT_FALSE(view->right()->model()->hasBuild());
+    for (int r = 0; r < CompareTable::RowCount; ++r)
+        EXPECT_FALSE(view->table()->value(static_cast<CompareTable::Row>(r), CompareTable::Right));
+    EXPECT_EQ(view->table()->item(CompareTable::NodesRow, CompareTable::Right)->text(),
+              QStringLiteral("–"));
+    // Nothing drawn on the cancelled side, the other side keeps its result.
+    view->right()->viewport()->grabFrame();
+    EXPECT_TRUE(view->right()->display()->drawList().empty());
+    EXPECT_EQ(view->left()->state(), ComparePane::State::Built);
+    EXPECT_FALSE(view->allBuilt());
+}
+
+TEST_F(CompareViewTest, ClosingOrDestroyingMidBuildIsSafe) {
+    view->open(test::sampleBuild().scene, test::testSettings(),
+               {config(VolumeType::Sphere), config(VolumeType::Aabb, 2.0)});
+    ASSERT_TRUE(view->building());
+    view->close(); // cancels both
+    ASSERT_TRUE(waitUntilIdle(*view->left()));
+    ASSERT_TRUE(waitUntilIdle(*view->right()));
+    EXPECT_EQ(view->left()->state(), ComparePane::State::Cancelled);
+    EXPECT_EQ(view->right()->state(), ComparePane::State::Cancelled);
+
+    view->show();
+    view->rebuildAll();
+    ASSERT_TRUE(view->building());
+    view.reset(); // joins both workers; their queued results go nowhere
+    QTest::qWait(300);
+    SUCCEED();
+}
+
+TEST_F(CompareViewTest, BaseSettingsRebuildOnlyTheSidesTheyChange) {
+    openSample();
+    HlodSettings base = test::testSettings();
+    // Volume, k and screen size are each side's own: a document change of those rebuilds none.
+    base.cluster.volume = VolumeType::Octree;
+    base.cluster.k = 5.0;
+    base.bake.screen.screenSize = 120.0;
+    view->setBaseSettings(base);
+    EXPECT_FALSE(view->building());
+    // Max children is shared: both sides rebuild.
+    base.cluster.maxChildren = 4;
+    view->setBaseSettings(base);
+    EXPECT_TRUE(view->left()->building());
+    EXPECT_TRUE(view->right()->building());
+    EXPECT_EQ(view->left()->settings().cluster.maxChildren, 4);
+    EXPECT_EQ(view->left()->settings().cluster.volume, VolumeType::Sphere);
+    view->cancelAll();
+}
+
+TEST_F(CompareViewTest, UseTheseSettingsIsOneUndoableCommand) {
+    ProjectSession session;
+    Document& doc = session.document();
+    view->setUndo(session.undo());
+    openSample();
+    ASSERT_FALSE(view->right()->useButton()->isHidden());
+    const ParamValues& cluster = doc.graph().node(doc.clusterNode()).params;
+    ASSERT_EQ(paramText(cluster, "volume"), "sphere");
+    ASSERT_EQ(paramNumber(cluster, "k"), 1.0);
+    const int steps = session.undo()->stack()->count();
+
+    view->right()->useButton()->click(); // AABB k=2, S = 300 (already the document's)
+    const ParamValues& after = doc.graph().node(doc.clusterNode()).params;
+    EXPECT_EQ(paramText(after, "volume"), "aabb");
+    EXPECT_EQ(paramNumber(after, "k"), 2.0);
+    EXPECT_EQ(session.undo()->stack()->count(), steps + 1);
+    EXPECT_TRUE(session.settings().cluster.volume == VolumeType::Aabb);
+
+    session.undo()->stack()->undo();
+    const ParamValues& undone = doc.graph().node(doc.clusterNode()).params;
+    EXPECT_EQ(paramText(undone, "volume"), "sphere");
+    EXPECT_EQ(paramNumber(undone, "k"), 1.0);
+
+    // The left side is the document's configuration already: nothing to do, no step.
+    view->left()->useButton()->click();
+    EXPECT_EQ(session.undo()->stack()->count(), steps + 1); // the undone step stays for redo
+    EXPECT_EQ(session.undo()->stack()->index(), steps);
+    EXPECT_TRUE(view->messageLabel()->text().contains(QStringLiteral("already")));
+}
+
+TEST(CompareConfig, UseCommandSetsOnlyWhatDiffersAndRevertsOnFailure) {
+    Document doc;
+    auto command = useConfigurationCommand(doc, config(VolumeType::Aabb, 2.0, 400.0));
+    ASSERT_NE(command, nullptr);
+    EXPECT_EQ(command->size(), 3u); // volume, k, screen size
+    EXPECT_EQ(useConfigurationCommand(doc, config(VolumeType::Sphere, 7.0)), nullptr)
+        << "k is not set for a sphere, the rest already matches";
+    const nlohmann::json before = doc.toJson();
+    // A screen size outside its declared range fails on the last part: the first two revert.
+    auto bad = useConfigurationCommand(doc, config(VolumeType::Aabb, 2.0, 1e9));
+    ASSERT_NE(bad, nullptr);
+    EXPECT_THROW(doc.execute(std::move(bad)), Error);
+    EXPECT_EQ(doc.toJson(), before);
+}
+
+TEST(CompareConfig, TextFormsParseOverTheBaseSettings) {
+    HlodSettings base = test::testSettings();
+    base.cluster.k = 0.5;
+    base.bake.screen.screenSize = 250.0;
+    CompareConfig c;
+    ASSERT_TRUE(parseConfig(QStringLiteral("aabb-k2@400"), base, c));
+    EXPECT_EQ(c, config(VolumeType::Aabb, 2.0, 400.0));
+    ASSERT_TRUE(parseConfig(QStringLiteral("AABB"), base, c)); // k and S of the base
+    EXPECT_EQ(c, config(VolumeType::Aabb, 0.5, 250.0));
+    ASSERT_TRUE(parseConfig(QStringLiteral("current"), base, c));
+    EXPECT_EQ(c, configOf(base));
+    ASSERT_TRUE(parseConfig(configSpec(config(VolumeType::Aabb, 1.5, 312.5)), base, c));
+    EXPECT_EQ(c, config(VolumeType::Aabb, 1.5, 312.5)); // configSpec round-trips
+    QString error;
+    EXPECT_FALSE(parseConfig(QStringLiteral("sphere-k2"), base, c, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("aabb only")));
+    EXPECT_FALSE(parseConfig(QStringLiteral("cube"), base, c, &error));
+    EXPECT_FALSE(parseConfig(QStringLiteral("aabb-k20"), base, c, &error)); // k in [0, 16]
+    EXPECT_FALSE(parseConfig(QStringLiteral("sphere@0"), base, c, &error)); // S >= 1
+
+    std::pair<CompareConfig, CompareConfig> pair;
+    ASSERT_TRUE(parseConfigPair(QStringLiteral("sphere:aabb-k2"), base, pair));
+    EXPECT_EQ(pair.first.volume, VolumeType::Sphere);
+    EXPECT_EQ(pair.second, config(VolumeType::Aabb, 2.0, 250.0));
+    EXPECT_FALSE(parseConfigPair(QStringLiteral("sphere"), base, pair));
+
+    // Defaults: the document against AABB k=2, or against sphere when it is AABB already.
+    const auto fromSphere = defaultConfigs(base);
+    EXPECT_EQ(fromSphere.first, configOf(base));
+    EXPECT_EQ(fromSphere.second, config(VolumeType::Aabb, 2.0, 250.0));
+    base.cluster.volume = VolumeType::Aabb;
+    const auto fromAabb = defaultConfigs(base);
+    EXPECT_EQ(fromAabb.second.volume, VolumeType::Sphere);
+    EXPECT_EQ(applyConfig(base, fromAabb.second).cluster.volume, VolumeType::Sphere);
+    EXPECT_EQ(applyConfig(base, config(VolumeType::Octree, 3.0, 90.0)).bake.screen.screenSize,
+              90.0);
+}
+
+} // namespace
+} // namespace hlod::widgets

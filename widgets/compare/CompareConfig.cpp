@@ -1,0 +1,153 @@
+// Configurations of the comparison view (see CompareConfig.h).
+#include "widgets/compare/CompareConfig.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QRegularExpression>
+
+#include "pipeline/graph/Parameters.h"
+
+namespace hlod::widgets {
+
+namespace {
+
+// k and S as the user typed them: no trailing zeros ("2", "0.5", "412.5").
+QString number(double value) { return QString::number(value, 'g', 10); }
+
+bool fail(QString* error, const QString& message) {
+    if (error) *error = message;
+    return false;
+}
+
+} // namespace
+
+CompareConfig configOf(const HlodSettings& settings) {
+    CompareConfig c;
+    c.volume = settings.cluster.volume;
+    c.k = settings.cluster.k;
+    c.screenSize = settings.bake.screen.screenSize;
+    return c;
+}
+
+HlodSettings applyConfig(const HlodSettings& base, const CompareConfig& config) {
+    HlodSettings s = base;
+    s.cluster.volume = config.volume;
+    s.cluster.k = config.k; // ignored by the other volumes, kept so the settings stay stable
+    s.bake.screen.screenSize = config.screenSize;
+    return s;
+}
+
+QString configLabel(const CompareConfig& config, bool withScreenSize) {
+    QString label;
+    switch (config.volume) {
+    case VolumeType::Sphere:
+        label = QCoreApplication::translate("CompareConfig", "Sphere");
+        break;
+    case VolumeType::Aabb:
+        label = QCoreApplication::translate("CompareConfig", "AABB k=%1")
+                    .arg(QLocale().toString(config.k, 'g', 10));
+        break;
+    case VolumeType::Octree:
+        label = QCoreApplication::translate("CompareConfig", "Octree");
+        break;
+    case VolumeType::Original:
+        label = QCoreApplication::translate("CompareConfig", "Original hierarchy");
+        break;
+    }
+    if (withScreenSize)
+        label = QCoreApplication::translate("CompareConfig", "%1, S = %2 px")
+                    .arg(label, QLocale().toString(config.screenSize, 'g', 10));
+    return label;
+}
+
+QString configSpec(const CompareConfig& config) {
+    QString spec = QString::fromLatin1(toString(config.volume));
+    if (config.volume == VolumeType::Aabb) spec += QStringLiteral("-k") + number(config.k);
+    return spec + QLatin1Char('@') + number(config.screenSize);
+}
+
+bool parseConfig(const QString& text, const HlodSettings& base, CompareConfig& out,
+                 QString* error) {
+    // volume, then optionally "-k" and a number, then optionally "@" and a number.
+    static const QRegularExpression pattern(
+        QStringLiteral(R"(^(current|sphere|octree|original|aabb))"
+                       R"((?:-k([0-9]+(?:\.[0-9]*)?))?)"
+                       R"((?:@([0-9]+(?:\.[0-9]*)?))?$)"));
+    const QString t = text.trimmed().toLower();
+    const QRegularExpressionMatch m = pattern.match(t);
+    if (!m.hasMatch())
+        return fail(error, QCoreApplication::translate(
+                               "CompareConfig",
+                               "\"%1\" is not a configuration: use sphere, aabb, aabb-kK, "
+                               "octree, original or current, optionally followed by @S (screen "
+                               "size in pixels)")
+                               .arg(text));
+    CompareConfig c = configOf(base);
+    const QString volume = m.captured(1);
+    if (volume != QLatin1String("current")) c.volume = volumeTypeFromString(volume.toStdString());
+    if (m.hasCaptured(2)) {
+        if (c.volume != VolumeType::Aabb)
+            return fail(error, QCoreApplication::translate("CompareConfig",
+                                                           "\"%1\": k applies to aabb only")
+                                   .arg(text));
+        const ParamDecl& k = parameterDeclaration("k");
+        c.k = m.captured(2).toDouble();
+        if (c.k < k.min || c.k > k.max)
+            return fail(error, QCoreApplication::translate("CompareConfig",
+                                                           "\"%1\": k must be within [%2, %3]")
+                                   .arg(text)
+                                   .arg(k.min)
+                                   .arg(k.max));
+    }
+    if (m.hasCaptured(3)) {
+        const ParamDecl& s = parameterDeclaration("screen_size");
+        c.screenSize = m.captured(3).toDouble();
+        if (c.screenSize < s.min || c.screenSize > s.max)
+            return fail(error,
+                        QCoreApplication::translate(
+                            "CompareConfig", "\"%1\": the screen size must be within [%2, %3] px")
+                            .arg(text)
+                            .arg(s.min)
+                            .arg(s.max));
+    }
+    out = c;
+    return true;
+}
+
+bool parseConfigPair(const QString& text, const HlodSettings& base,
+                     std::pair<CompareConfig, CompareConfig>& out, QString* error) {
+    const QStringList parts = text.split(QLatin1Char(':'));
+    if (parts.size() != 2)
+        return fail(error,
+                    QCoreApplication::translate(
+                        "CompareConfig", "\"%1\" is not a pair of configurations LEFT:RIGHT, e.g. "
+                                         "sphere:aabb-k2")
+                        .arg(text));
+    std::pair<CompareConfig, CompareConfig> pair;
+    if (!parseConfig(parts[0], base, pair.first, error) ||
+        !parseConfig(parts[1], base, pair.second, error))
+        return false;
+    out = pair;
+    return true;
+}
+
+std::pair<CompareConfig, CompareConfig> defaultConfigs(const HlodSettings& document) {
+    const CompareConfig left = configOf(document);
+    CompareConfig right = left;
+    if (left.volume == VolumeType::Aabb) {
+        right.volume = VolumeType::Sphere;
+    } else {
+        right.volume = VolumeType::Aabb;
+        right.k = 2.0; // the thesis' most compact AABB variant
+    }
+    return {left, right};
+}
+
+bool sameSettings(const HlodSettings& a, const HlodSettings& b) {
+    return paramsFrom(a.cluster) == paramsFrom(b.cluster) &&
+           paramsFrom(a.bake) == paramsFrom(b.bake) &&
+           a.cluster.lockedGroups == b.cluster.lockedGroups &&
+           a.cluster.excluded == b.cluster.excluded;
+}
+
+} // namespace hlod::widgets
