@@ -620,6 +620,14 @@
         <source>Cluster the selected excluded meshes again</source>
         <translation>Klustra de markerade uteslutna näten igen</translation>
     </message>
+    <message>
+        <source>Mo&amp;ve to Cluster</source>
+        <translation>&amp;Flytta till kluster</translation>
+    </message>
+    <message>
+        <source>Move the other selected meshes and clusters into the current cluster (the row clicked last)</source>
+        <translation>Flytta de övriga markerade näten och klustren till det aktuella klustret (raden som klickades senast)</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::ClusterTreeModel</name>

@@ -45,6 +45,11 @@ ClusterEditActions::ClusterEditActions(ProjectSession* session, StudioModel* mod
                    tr("Hang the selected meshes directly from the root, never merged"), this);
     include_ =
         makeAction(tr("&Include in HLOD"), tr("Cluster the selected excluded meshes again"), this);
+    move_ = makeAction(tr("Mo&ve to Cluster"),
+                       tr("Move the other selected meshes and clusters into the current cluster "
+                          "(the row clicked last)"),
+                       this);
+    connect(move_, &QAction::triggered, this, &ClusterEditActions::moveToCurrent);
     connect(merge_, &QAction::triggered, this, &ClusterEditActions::merge);
     connect(split_, &QAction::triggered, this, &ClusterEditActions::split);
     connect(lock_, &QAction::triggered, this, &ClusterEditActions::lock);
@@ -73,7 +78,7 @@ void ClusterEditActions::attachViewport(Viewport* viewport, DisplayController* d
 }
 
 QList<QAction*> ClusterEditActions::actions() const {
-    return {merge_, split_, lock_, unlock_, exclude_, include_};
+    return {merge_, split_, move_, lock_, unlock_, exclude_, include_};
 }
 
 std::vector<Id> ClusterEditActions::selectedNodes() const {
@@ -125,11 +130,14 @@ void ClusterEditActions::updateActions() {
     unlock_->setEnabled(idle && n >= 1);
     exclude_->setEnabled(idle && n >= 1);
     include_->setEnabled(idle && !excludedInSelection().empty());
+    std::vector<InstanceSet> items;
+    InstanceSet target;
+    move_->setEnabled(idle && moveToCurrentSets(items, target));
 }
 
 void ClusterEditActions::fillMenu(QMenu* menu) {
     updateActions();
-    menu->addActions({merge_, split_});
+    menu->addActions({merge_, split_, move_});
     menu->addSeparator();
     menu->addActions({lock_, unlock_});
     menu->addSeparator();
@@ -263,6 +271,27 @@ bool ClusterEditActions::include() {
     const NodeId node = session_->document().clusterNode();
     if (excluded.empty() || node == kNoNode) return false;
     return session_->undo()->execute(std::make_unique<IncludeInstance>(node, std::move(excluded)));
+}
+
+bool ClusterEditActions::moveToCurrentSets(std::vector<InstanceSet>& items,
+                                           InstanceSet& target) const {
+    items.clear();
+    target.clear();
+    if (!model_->hasBuild() || !tree_->selectionModel()) return false;
+    const QModelIndex current = tree_->selectionModel()->currentIndex();
+    if (!current.isValid() || !tree_->selectionModel()->isSelected(current)) return false;
+    const Id targetNode = treeModel_->nodeOf(current);
+    for (Id node : selectedNodes())
+        if (node != targetNode) items.push_back(treeModel_->leafSetOf(node));
+    target = treeModel_->leafSetOf(targetNode);
+    return !items.empty() && treeModel_->acceptsMove(items, target);
+}
+
+bool ClusterEditActions::moveToCurrent() {
+    std::vector<InstanceSet> items;
+    InstanceSet target;
+    if (!moveToCurrentSets(items, target)) return false;
+    return moveTo(items, target);
 }
 
 bool ClusterEditActions::moveTo(const std::vector<InstanceSet>& items, const InstanceSet& target) {

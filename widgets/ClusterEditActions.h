@@ -1,12 +1,15 @@
 // Hand edits of clusters (issue #7) from the "Clusters" tab and the viewport: Merge, Split,
 // Lock, Unlock, Exclude from HLOD and Include in HLOD on the selected clusters (a context menu on
-// the tree rows and on the viewport), and Move by dragging rows onto another cluster in the tree
-// (ClusterTreeModel::moveRequested). Each is one document command (Commands.h: MergeClusters,
-// LockCluster, UnlockCluster, ExcludeInstance, IncludeInstance, MoveToCluster;
-// SplitClusterOfTree for splits) executed through the UndoAdapter, so it is undoable; the
-// rebuild that follows every change of the hand edits (undo and redo included) is AutoRebuild's.
-// Clusters are named by their leaf sets in the current build (HandEdits.h), so the actions need
-// a build; without one (or while one runs) they are disabled.
+// the tree rows and on the viewport), and Move: by dragging rows onto another cluster in the tree
+// (ClusterTreeModel::moveRequested), or with "Move to Cluster" in the menu, which moves the
+// other selected rows into the current one (the row clicked last; a right click on a selected
+// row, in the tree or on its cluster in the viewport, makes it current and keeps the
+// selection). Both go through moveTo and refuse what a drop refuses (acceptsMove).
+// Each is one document command (Commands.h: MergeClusters, LockCluster, UnlockCluster,
+// ExcludeInstance, IncludeInstance, MoveToCluster; SplitClusterOfTree for splits) executed through
+// the UndoAdapter, so it is undoable; the rebuild that follows every change of the hand edits (undo
+// and redo included) is AutoRebuild's. Clusters are named by their leaf sets in the current build
+// (HandEdits.h), so the actions need a build; without one (or while one runs) they are disabled.
 //
 // Selection: the tree's selected rows are the clusters the actions act on; the tree allows
 // extended selection (Ctrl/Shift-click; SelectionSync keeps the extra rows). In the viewport
@@ -53,6 +56,7 @@ public:
     QAction* unlockAction() const { return unlock_; }
     QAction* excludeAction() const { return exclude_; }
     QAction* includeAction() const { return include_; }
+    QAction* moveAction() const { return move_; }
     QList<QAction*> actions() const;
     // The leaf sets of the selected rows (sorted by first instance).
     std::vector<InstanceSet> selectedClusters() const;
@@ -71,6 +75,9 @@ public:
     bool include();
     // Moves `items` (leaf sets) into the cluster `target` (a leaf set).
     bool moveTo(const std::vector<InstanceSet>& items, const InstanceSet& target);
+    // "Move to Cluster": moves the selected rows other than the current row into the current
+    // row's cluster, when a drop of those rows onto it would be accepted.
+    bool moveToCurrent();
 
     // Viewport gestures at `pos` (viewport coordinates); public for tests. The node the gesture
     // picked, kNoId when nothing is under the cursor.
@@ -86,6 +93,8 @@ private:
     Id pickCluster(const QPoint& pos);
     void selectRows(const std::vector<Id>& nodes, Id current);
     InstanceSet excludedInSelection() const;
+    // The leaf sets "Move to Cluster" would move and its target; false when it cannot.
+    bool moveToCurrentSets(std::vector<InstanceSet>& items, InstanceSet& target) const;
 
     ProjectSession* session_;
     StudioModel* model_;
@@ -99,6 +108,7 @@ private:
     QAction* unlock_ = nullptr;
     QAction* exclude_ = nullptr;
     QAction* include_ = nullptr;
+    QAction* move_ = nullptr;
 };
 
 } // namespace hlod::widgets

@@ -152,14 +152,17 @@ void DisplayController::refreshClusters() {
     const ClusterTree& tree = built.build->tree;
     cut_ = coloring_->colorByLevel(tree, model_->view().level);
     std::vector<Id> bounded = cut_;
-    const Id selected = model_->selection().clusterNode;
     if (model_->view().boundsOfSelectionOnly) {
-        // The selected cluster and the level's clusters inside it.
-        bounded.clear();
-        if (selected != kNoId) {
-            bounded.push_back(selected);
-            for (Id n : cut_)
-                if (n != selected && isInSubtree(tree, n, selected)) bounded.push_back(n);
+        // The selected clusters and the level's clusters inside them.
+        const std::vector<Id>& selected = model_->selectedNodes();
+        bounded = selected;
+        for (Id n : cut_) {
+            if (std::binary_search(selected.begin(), selected.end(), n)) continue;
+            for (Id s : selected)
+                if (isInSubtree(tree, n, s)) {
+                    bounded.push_back(n);
+                    break;
+                }
         }
     }
     boundsActor_->GetMapper()->SetInputDataObject(
@@ -178,6 +181,21 @@ void DisplayController::refreshHighlight() {
     highlightActor_->GetMapper()->SetInputDataObject(
         selectionHighlight(*scene, selection.instances));
     highlightActor_->VisibilityOn();
+}
+
+std::vector<Id> DisplayController::highlightedInstances() const {
+    std::vector<Id> out;
+    if (!highlightActor_->GetVisibility()) return out;
+    auto* poly = vtkPolyData::SafeDownCast(highlightActor_->GetMapper()->GetInput());
+    auto* ids = poly ? vtkUnsignedIntArray::SafeDownCast(
+                           poly->GetCellData()->GetArray(SceneActors::kInstanceIdArray))
+                     : nullptr;
+    if (!ids) return out;
+    for (vtkIdType cell = 0; cell < ids->GetNumberOfTuples(); ++cell)
+        out.push_back(ids->GetValue(cell));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 Camera DisplayController::currentCamera() const {

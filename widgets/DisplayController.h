@@ -1,6 +1,7 @@
 // Puts the StudioModel's display mode into the Viewport: the original scene, the clusters of a
 // level with their bounds, or the HLOD preview; plus the selection highlight, the overlay with
-// the frame's counters, and picking.
+// the frame's counters, and picking. The highlight draws the meshes of the whole selection:
+// with several clusters selected (StudioModel::selectedNodes) the union of their meshes.
 //
 // HLOD preview: right before each frame (Viewport::aboutToRender) the model's LOD selection
 // runs for the viewport's camera (its FrontCache: only the change since the last frame is
@@ -59,6 +60,8 @@ public:
     const std::vector<Id>& shownClusters() const { return cut_; }
     // The overlay's text (empty when hidden).
     QString overlayText() const;
+    // The instances the selection highlight draws (sorted; empty when it is hidden).
+    std::vector<Id> highlightedInstances() const;
 
 Q_SIGNALS:
     void frameStats(const hlod::widgets::FrameStats& stats);

@@ -1,6 +1,8 @@
 // Two-way selection between the trees and the model (see SelectionSync.h).
 #include "widgets/SelectionSync.h"
 
+#include <vector>
+
 #include <QItemSelectionModel>
 #include <QTreeView>
 
@@ -31,7 +33,7 @@ SelectionSync::SelectionSync(StudioModel* model, QTreeView* sceneTree, SceneTree
 void SelectionSync::showModelSelection() {
     const StudioSelection& s = model_->selection();
     syncing_ = true;
-    auto show = [this](QTreeView* view, const QModelIndex& index) {
+    auto show = [this](QTreeView* view, const QModelIndex& index, const QItemSelection& rows) {
         // The clicked tree already shows the user's rows (one or several): keep them.
         if (view == userTree_) return;
         if (!index.isValid()) {
@@ -40,10 +42,18 @@ void SelectionSync::showModelSelection() {
         }
         view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect |
                                                            QItemSelectionModel::Rows);
+        if (!rows.isEmpty())
+            view->selectionModel()->select(rows,
+                                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
         view->scrollTo(index);
     };
-    show(sceneTree_, sceneModel_->indexOfNode(s.sceneNode));
-    show(clusterTree_, clusterModel_->indexOfNode(s.clusterNode));
+    show(sceneTree_, sceneModel_->indexOfNode(s.sceneNode), {});
+    QItemSelection clusterRows;
+    for (Id node : s.clusterNodes) {
+        const QModelIndex row = clusterModel_->indexOfNode(node);
+        if (row.isValid()) clusterRows.select(row, row);
+    }
+    show(clusterTree_, clusterModel_->indexOfNode(s.clusterNode), clusterRows);
     syncing_ = false;
 }
 
@@ -55,15 +65,20 @@ void SelectionSync::onTreeCurrentChanged(QTreeView* view) {
     userTree_ = view;
     // A Ctrl-click that deselects the current row: the model shows another selected row.
     if (!view->selectionModel()->isSelected(current)) {
-        const QModelIndexList rows = view->selectionModel()->selectedRows();
+        const QModelIndexList rows = view->selectionModel()->selectedIndexes();
         current = rows.isEmpty() ? QModelIndex() : rows.front();
     }
-    if (!current.isValid())
+    if (!current.isValid()) {
         model_->clearSelection();
-    else if (view == sceneTree_)
+    } else if (view == sceneTree_) {
         model_->selectSceneNode(sceneModel_->nodeOf(current));
-    else
-        model_->selectClusterNode(clusterModel_->nodeOf(current));
+    } else {
+        std::vector<Id> nodes;
+        // Any selected cell counts (a row may be selected in its first column only).
+        for (const QModelIndex& cell : view->selectionModel()->selectedIndexes())
+            nodes.push_back(clusterModel_->nodeOf(cell));
+        model_->setSelection(nodes, clusterModel_->nodeOf(current));
+    }
     userTree_ = nullptr;
 }
 

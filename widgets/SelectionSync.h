@@ -3,10 +3,12 @@
 // viewport); a selection made elsewhere (a click in the viewport) selects and reveals the
 // matching rows, or clears a tree that has no row for it.
 // It holds no selection of its own: the model is the one source; a guard stops the echo.
-// Multi-selection: a Ctrl- or Shift-click in a tree makes the clicked row the model's selection
-// (what the viewport highlights) but leaves the tree's other selected rows alone, so several
-// clusters can be selected for the hand edits (ClusterEditActions reads the tree's selection).
-// A selection made elsewhere replaces the rows of both trees.
+// Multi-selection: a Ctrl- or Shift-click in the Clusters tree passes all its selected rows to
+// the model (StudioModel::setSelection; the clicked row is the current one), so the viewport
+// highlights every selected cluster and the hand edits act on them (ClusterEditActions reads
+// the tree's selection). In the Scene tree the clicked row is the model's selection and the
+// tree's other selected rows stay. A selection made elsewhere replaces the rows of both trees
+// (the Clusters tree selects every cluster node of the model's selection).
 #pragma once
 
 #include <QObject>

@@ -104,8 +104,9 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
     StudioSelection selection = selection_;
     selection.clusterNode =
         selection.instances.size() == 1 ? leafOfInstance_[selection.instances[0]] : kNoId;
+    selection.clusterNodes.clear();
     Q_EMIT buildFinished();
-    setSelection(std::move(selection));
+    applySelection(std::move(selection));
     ViewOptions view = view_;
     view.level = std::clamp(view.level, 0, maxLevel());
     setView(view);
@@ -148,7 +149,7 @@ void StudioModel::selectInstance(Id instance) {
     s.instances = {instance};
     s.sceneNode = scene_->instances[instance].node;
     s.clusterNode = instance < leafOfInstance_.size() ? leafOfInstance_[instance] : kNoId;
-    setSelection(std::move(s));
+    applySelection(std::move(s));
 }
 
 void StudioModel::selectSceneNode(Id node) {
@@ -161,7 +162,7 @@ void StudioModel::selectSceneNode(Id node) {
     s.instances = instancesBelowSceneNode(node);
     if (s.instances.size() == 1 && s.instances[0] < leafOfInstance_.size())
         s.clusterNode = leafOfInstance_[s.instances[0]];
-    setSelection(std::move(s));
+    applySelection(std::move(s));
 }
 
 void StudioModel::selectClusterNode(Id node) {
@@ -174,12 +175,41 @@ void StudioModel::selectClusterNode(Id node) {
     s.instances = instancesBelow(built_.build->tree, node);
     std::sort(s.instances.begin(), s.instances.end());
     if (s.instances.size() == 1) s.sceneNode = scene_->instances[s.instances[0]].node;
-    setSelection(std::move(s));
+    applySelection(std::move(s));
 }
 
-void StudioModel::clearSelection() { setSelection({}); }
+void StudioModel::setSelection(const std::vector<Id>& nodes, Id current) {
+    StudioSelection s;
+    if (hasBuild()) {
+        const ClusterTree& tree = built_.build->tree;
+        for (Id node : nodes)
+            if (node < tree.nodes.size()) s.clusterNodes.push_back(node);
+    }
+    std::sort(s.clusterNodes.begin(), s.clusterNodes.end());
+    s.clusterNodes.erase(std::unique(s.clusterNodes.begin(), s.clusterNodes.end()),
+                         s.clusterNodes.end());
+    if (s.clusterNodes.empty()) {
+        clearSelection();
+        return;
+    }
+    const bool known = std::binary_search(s.clusterNodes.begin(), s.clusterNodes.end(), current);
+    s.clusterNode = known ? current : s.clusterNodes.front();
+    for (Id node : s.clusterNodes) {
+        const std::vector<Id> below = instancesBelow(built_.build->tree, node);
+        s.instances.insert(s.instances.end(), below.begin(), below.end());
+    }
+    std::sort(s.instances.begin(), s.instances.end());
+    s.instances.erase(std::unique(s.instances.begin(), s.instances.end()), s.instances.end());
+    if (s.instances.size() == 1) s.sceneNode = scene_->instances[s.instances[0]].node;
+    applySelection(std::move(s));
+}
 
-void StudioModel::setSelection(StudioSelection selection) {
+void StudioModel::clearSelection() { applySelection({}); }
+
+void StudioModel::applySelection(StudioSelection selection) {
+    // A single cluster node (from an instance, a scene node or a cluster) is the whole set.
+    if (selection.clusterNodes.empty() && selection.clusterNode != kNoId)
+        selection.clusterNodes = {selection.clusterNode};
     if (selection == selection_) return;
     selection_ = std::move(selection);
     Q_EMIT selectionChanged();

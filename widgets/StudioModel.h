@@ -9,6 +9,9 @@
 // FrontCache over the current build) lives here too, so every view of it agrees.
 // Selection: a set of scene instances, plus the scene node and cluster node it came from (or
 // that correspond to it: picking an instance selects its scene node and its cluster leaf).
+// Several cluster nodes can be selected at once (setSelection(nodes, current): the rows of a
+// Ctrl/Shift-click multi-selection in the Clusters tree); the instances are then the union of
+// their subtrees and clusterNode is the current one of them (the row clicked last).
 // Signals are emitted only on real changes, so views can sync both ways without loops.
 #pragma once
 
@@ -45,7 +48,8 @@ struct ViewOptions {
 struct StudioSelection {
     std::vector<Id> instances; // sorted scene instance ids
     Id sceneNode = kNoId;
-    Id clusterNode = kNoId;
+    Id clusterNode = kNoId;       // the current cluster node (one of clusterNodes)
+    std::vector<Id> clusterNodes; // every selected cluster node, sorted
     bool empty() const { return instances.empty() && clusterNode == kNoId; }
     bool operator==(const StudioSelection&) const = default;
 };
@@ -91,8 +95,13 @@ public:
     void selectInstance(Id instance);
     void selectSceneNode(Id node);
     void selectClusterNode(Id node);
+    // Selects the cluster nodes `nodes` together (ids outside the build are dropped); `current`
+    // becomes clusterNode when it is one of them, else the first of them.
+    void setSelection(const std::vector<Id>& nodes, Id current = kNoId);
     void clearSelection();
     const StudioSelection& selection() const { return selection_; }
+    // The selected cluster nodes (sorted; one for a single selection, none without a cluster).
+    const std::vector<Id>& selectedNodes() const { return selection_.clusterNodes; }
 
     const ViewOptions& view() const { return view_; }
     void setMode(DisplayMode mode);
@@ -117,7 +126,7 @@ Q_SIGNALS:
     void viewChanged();
 
 private:
-    void setSelection(StudioSelection selection);
+    void applySelection(StudioSelection selection);
     void setView(const ViewOptions& view);
     std::vector<Id> instancesBelowSceneNode(Id node) const;
 

@@ -1,5 +1,6 @@
-// Hand-editing clusters in the editor (issue #7): split, move by drag and drop, exclude and
-// include, Ctrl-click multi-selection in the Clusters tree, each an undoable command followed by
+// Hand-editing clusters in the editor (issue #7): split, move by drag and drop and by the "Move
+// to Cluster" action, exclude and include, Ctrl-click multi-selection in the Clusters tree (and
+// its highlight of every selected cluster in the viewport), each an undoable command followed by
 // a rebuild (AutoRebuild) whose tree is the one `hlod build PROJECT.hlodproj` makes; and a
 // project saved with hand edits reopens with them.
 //
@@ -67,6 +68,23 @@ protected:
         for (Id node : nodes)
             tree.selectionModel()->select(treeModel.indexOfNode(node),
                                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+    }
+    // A click on the row of `node` in the shown tree.
+    void clickRow(Id node, Qt::KeyboardModifiers mods) {
+        const QRect rect = tree.visualRect(treeModel.indexOfNode(node));
+        ASSERT_TRUE(rect.isValid());
+        QTest::mouseClick(tree.viewport(), Qt::LeftButton, mods, rect.center());
+    }
+    // The instances below `nodes` (sorted, each once).
+    std::vector<Id> instancesOf(const std::vector<Id>& nodes) const {
+        std::vector<Id> out;
+        for (Id node : nodes) {
+            const std::vector<Id> below = instancesBelow(current(), node);
+            out.insert(out.end(), below.begin(), below.end());
+        }
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
     }
     // Inner children of the root, in row order.
     std::vector<Id> innerChildrenOfRoot() const {
@@ -229,15 +247,10 @@ TEST_F(HandEdit, CtrlClickSelectsSeveralClustersAndEnablesMerge) {
     tree.expandToDepth(0);
     const std::vector<Id> inner = innerChildrenOfRoot();
     ASSERT_GE(inner.size(), 2u);
-    auto clickRow = [&](Id node, Qt::KeyboardModifiers mods) {
-        const QRect rect = tree.visualRect(treeModel.indexOfNode(node));
-        ASSERT_TRUE(rect.isValid());
-        QTest::mouseClick(tree.viewport(), Qt::LeftButton, mods, rect.center());
-    };
     clickRow(inner[0], Qt::NoModifier);
     EXPECT_EQ(model.selection().clusterNode, inner[0]);
     clickRow(inner[1], Qt::ControlModifier);
-    // The model follows the last click (the viewport highlights it); the tree keeps both rows.
+    // The model holds both rows (the viewport highlights both); the last click is current.
     EXPECT_EQ(model.selection().clusterNode, inner[1]);
     EXPECT_EQ(edits->selectedNodes(),
               (std::vector<Id>{std::min(inner[0], inner[1]), std::max(inner[0], inner[1])}));
@@ -264,6 +277,106 @@ TEST_F(HandEdit, CtrlClickSelectsSeveralClustersAndEnablesMerge) {
     EXPECT_EQ(model.selection().clusterNode, inner[0]);
     edits->updateActions();
     EXPECT_TRUE(edits->mergeAction()->isEnabled());
+}
+
+TEST_F(HandEdit, SeveralSelectedClustersAreAllHighlighted) {
+    const GlProbeResult gl = probeOpenGl();
+    ASSERT_TRUE(gl.ok) << gl.problem.toStdString();
+    Viewport viewport;
+    viewport.setFixedSize(320, 240);
+    DisplayController display(&model, &viewport);
+    viewport.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&viewport));
+    SceneTreeModel sceneModel;
+    sceneModel.setScene(model.scene());
+    QTreeView sceneTree;
+    sceneTree.setModel(&sceneModel);
+    SelectionSync sync(&model, &sceneTree, &sceneModel, &tree, &treeModel);
+    tree.resize(500, 600);
+    tree.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&tree));
+    tree.expandToDepth(0);
+    const std::vector<Id> inner = innerChildrenOfRoot();
+    ASSERT_GE(inner.size(), 2u);
+    const std::vector<Id> both{std::min(inner[0], inner[1]), std::max(inner[0], inner[1])};
+
+    clickRow(inner[0], Qt::NoModifier);
+    EXPECT_EQ(display.highlightedInstances(), instancesOf({inner[0]}));
+    clickRow(inner[1], Qt::ControlModifier);
+    // Both clusters are the model's selection; the clicked one is current.
+    EXPECT_EQ(model.selectedNodes(), both);
+    EXPECT_EQ(model.selection().clusterNode, inner[1]);
+    const std::vector<Id> all = instancesOf(both);
+    EXPECT_GT(all.size(), instancesOf({inner[1]}).size());
+    EXPECT_EQ(model.selection().instances, all);
+    EXPECT_EQ(display.highlightedInstances(), all); // the union, not the last click's
+    // Ctrl-click again: back to the first cluster's meshes.
+    clickRow(inner[1], Qt::ControlModifier);
+    EXPECT_EQ(model.selectedNodes(), std::vector<Id>{inner[0]});
+    EXPECT_EQ(display.highlightedInstances(), instancesOf({inner[0]}));
+
+    // A multi-selection set in the model selects every row of the tree.
+    model.setSelection({inner[1], inner[0]}, inner[0]);
+    EXPECT_EQ(edits->selectedNodes(), both);
+    EXPECT_EQ(tree.selectionModel()->currentIndex(), treeModel.indexOfNode(inner[0]));
+    EXPECT_EQ(display.highlightedInstances(), all);
+    model.clearSelection();
+    EXPECT_TRUE(display.highlightedInstances().empty());
+    EXPECT_TRUE(edits->selectedNodes().empty());
+}
+
+TEST_F(HandEdit, MoveToClusterMovesTheOtherRowsIntoTheCurrentOneAsADropDoes) {
+    const std::vector<Id> inner = innerChildrenOfRoot();
+    ASSERT_GE(inner.size(), 2u);
+    const Id target = inner[1];
+    Id leaf = inner[0];
+    while (!current().nodes[leaf].isLeaf())
+        leaf = current().nodes[leaf].children.front();
+    const Id instance = current().nodes[leaf].instance;
+    auto makeCurrent = [&](Id node) {
+        tree.selectionModel()->setCurrentIndex(treeModel.indexOfNode(node),
+                                               QItemSelectionModel::NoUpdate);
+        edits->updateActions();
+    };
+
+    // Only the target selected: nothing to move.
+    select({target});
+    makeCurrent(target);
+    EXPECT_FALSE(edits->moveAction()->isEnabled());
+    // The leaf current: refused, as a drop onto a leaf is.
+    select({leaf, target});
+    makeCurrent(leaf);
+    EXPECT_FALSE(edits->moveAction()->isEnabled());
+    EXPECT_FALSE(edits->moveToCurrent());
+    // The root current: refused, as a drop onto the root is.
+    select({leaf, current().root});
+    makeCurrent(current().root);
+    EXPECT_FALSE(edits->moveAction()->isEnabled());
+    EXPECT_EQ(session.document().history().count(), 2u); // only the two parameter edits
+
+    select({leaf, target});
+    makeCurrent(target);
+    ASSERT_TRUE(edits->moveAction()->isEnabled());
+    edits->moveAction()->trigger();
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Move to cluster"));
+    const HandEdits moved = editsOf(session.document());
+    InstanceSet group = leafSet(current(), target);
+    group.push_back(instance);
+    group = normalizedSet(group);
+    ASSERT_EQ(moved.locked, std::vector<InstanceSet>{group});
+
+    // Dropping the leaf on the target makes the same edit.
+    session.undo()->stack()->undo();
+    ASSERT_TRUE(editsOf(session.document()).empty());
+    std::unique_ptr<QMimeData> data(treeModel.mimeData({treeModel.indexOfNode(leaf)}));
+    ASSERT_TRUE(
+        treeModel.dropMimeData(data.get(), Qt::MoveAction, -1, -1, treeModel.indexOfNode(target)));
+    EXPECT_EQ(editsOf(session.document()), moved);
+
+    ASSERT_TRUE(test::waitForBuild(model));
+    const Id cluster = findCluster(current(), group);
+    ASSERT_NE(cluster, kNoId);
+    EXPECT_TRUE(current().nodes[cluster].locked);
 }
 
 TEST_F(HandEdit, ProjectWithHandEditsReopensWithThem) {

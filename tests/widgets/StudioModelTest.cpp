@@ -1,7 +1,9 @@
 // Tests of widgets/StudioModel and HlodBuilder: background builds, cancellation, failures,
-// statistics, and the selection mapping between instances, scene nodes and cluster nodes.
+// statistics, and the selection mapping between instances, scene nodes and (one or several)
+// cluster nodes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 
 #include <QSignalSpy>
@@ -123,6 +125,39 @@ TEST(StudioModel, SelectionMapsBetweenInstancesSceneNodesAndClusters) {
 
     model.selectInstance(kNoId);
     EXPECT_TRUE(model.selection().empty());
+}
+
+TEST(StudioModel, SeveralClusterNodesSelectTheUnionOfTheirInstances) {
+    StudioModel model;
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    model.setScene(scene);
+    model.setBuilt(test::buildNow(scene));
+    ASSERT_TRUE(model.hasBuild());
+    const ClusterTree& tree = model.built().build->tree;
+    const Id leaf0 = leafOfInstance(tree, 0);
+    const Id leaf2 = leafOfInstance(tree, 2);
+    QSignalSpy changed(&model, &StudioModel::selectionChanged);
+
+    // Ids outside the tree are dropped; `current` becomes the selection's cluster node.
+    model.setSelection({leaf2, kNoId, leaf0, leaf2}, leaf2);
+    EXPECT_EQ(model.selectedNodes(),
+              (std::vector<Id>{std::min(leaf0, leaf2), std::max(leaf0, leaf2)}));
+    EXPECT_EQ(model.selection().clusterNode, leaf2);
+    EXPECT_EQ(model.selection().instances, (std::vector<Id>{0, 2}));
+    EXPECT_EQ(model.selection().sceneNode, kNoId);
+    EXPECT_EQ(changed.count(), 1);
+    // A current node that is not selected falls back to the first selected one.
+    model.setSelection({leaf0, leaf2}, tree.root);
+    EXPECT_EQ(model.selection().clusterNode, std::min(leaf0, leaf2));
+    // A node inside another selected one adds no instance twice.
+    model.setSelection({tree.root, leaf0});
+    EXPECT_EQ(model.selection().instances, (std::vector<Id>{0, 1, 2}));
+    // The single-selection calls select one cluster node.
+    model.selectInstance(1);
+    EXPECT_EQ(model.selectedNodes(), std::vector<Id>{leafOfInstance(tree, 1)});
+    model.setSelection({kNoId});
+    EXPECT_TRUE(model.selection().empty());
+    EXPECT_TRUE(model.selectedNodes().empty());
 }
 
 TEST(StudioModel, OpeningAnotherSceneDropsTheBuildAndGoesBackToOriginal) {
