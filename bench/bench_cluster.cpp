@@ -48,6 +48,18 @@ double peakRssMiB() {
     return static_cast<double>(u.ru_maxrss) / 1024.0; // ru_maxrss is in KiB on Linux
 }
 
+// Times buildClusterTree(s, p) and reports the node count and the peak memory.
+void timeClustering(benchmark::State& state, const hlod::Scene& s, const hlod::ClusterParams& p) {
+    std::size_t nodes = 0;
+    for (auto _ : state) {
+        const hlod::ClusterTree t = hlod::buildClusterTree(s, p);
+        nodes = t.nodes.size();
+        benchmark::DoNotOptimize(nodes);
+    }
+    state.counters["nodes"] = static_cast<double>(nodes);
+    state.counters["peakRssMiB"] = peakRssMiB();
+}
+
 // range(0): instances, range(1): layout (0 uniform, 1 clumped), range(2): volume (0 sphere,
 // 1 aabb k=1, 2 octree).
 void BM_Cluster(benchmark::State& state) {
@@ -60,14 +72,7 @@ void BM_Cluster(benchmark::State& state) {
                : state.range(2) == 1 ? hlod::VolumeType::Aabb
                                      : hlod::VolumeType::Octree;
     p.k = 1.0;
-    std::size_t nodes = 0;
-    for (auto _ : state) {
-        const hlod::ClusterTree t = hlod::buildClusterTree(s, p);
-        nodes = t.nodes.size();
-        benchmark::DoNotOptimize(nodes);
-    }
-    state.counters["nodes"] = static_cast<double>(nodes);
-    state.counters["peakRssMiB"] = peakRssMiB();
+    timeClustering(state, s, p);
     state.SetLabel(std::string(layout == Layout::Clumped ? "clumped " : "uniform ") +
                    hlod::toString(p.volume));
 }
@@ -92,14 +97,7 @@ void BM_ClusterAabbK(benchmark::State& state) {
     hlod::ClusterParams p;
     p.volume = hlod::VolumeType::Aabb;
     p.k = static_cast<double>(state.range(2));
-    std::size_t nodes = 0;
-    for (auto _ : state) {
-        const hlod::ClusterTree t = hlod::buildClusterTree(s, p);
-        nodes = t.nodes.size();
-        benchmark::DoNotOptimize(nodes);
-    }
-    state.counters["nodes"] = static_cast<double>(nodes);
-    state.counters["peakRssMiB"] = peakRssMiB();
+    timeClustering(state, s, p);
     state.SetLabel(std::string(layout == Layout::Clumped ? "clumped" : "uniform") +
                    " aabb k=" + std::to_string(state.range(2)));
 }

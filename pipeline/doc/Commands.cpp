@@ -182,6 +182,10 @@ nlohmann::json HandEditCommand::toJson() const {
     return j;
 }
 
+InstanceSetEdit::InstanceSetEdit(NodeId n, InstanceSet set, const char* argument)
+    : HandEditCommand(n), set_(normalizedSet(std::move(set))), argument_(argument) {}
+nlohmann::json InstanceSetEdit::arguments() const { return {{argument_, set_}}; }
+
 MergeClusters::MergeClusters(NodeId n, std::vector<InstanceSet> clusters)
     : HandEditCommand(n), clusters_(std::move(clusters)) {}
 HandEdits MergeClusters::edit(const HandEdits& e, const Document&) const {
@@ -190,13 +194,12 @@ HandEdits MergeClusters::edit(const HandEdits& e, const Document&) const {
 nlohmann::json MergeClusters::arguments() const { return {{"clusters", clusters_}}; }
 
 SplitCluster::SplitCluster(NodeId n, InstanceSet cluster)
-    : HandEditCommand(n), cluster_(normalizedSet(std::move(cluster))) {}
+    : InstanceSetEdit(n, std::move(cluster), "cluster") {}
 HandEdits SplitCluster::edit(const HandEdits& e, const Document& doc) const {
     const ClusterTree* tree = doc.currentTree(node_);
     if (!tree) throw Error(ErrorCode::InvalidArgument, "run clustering before splitting a cluster");
-    return splitCluster(e, *tree, cluster_);
+    return splitCluster(e, *tree, set_);
 }
-nlohmann::json SplitCluster::arguments() const { return {{"cluster", cluster_}}; }
 
 MoveToCluster::MoveToCluster(NodeId n, std::vector<InstanceSet> items, InstanceSet target)
     : HandEditCommand(n), items_(std::move(items)), target_(normalizedSet(std::move(target))) {}
@@ -206,31 +209,27 @@ HandEdits MoveToCluster::edit(const HandEdits& e, const Document&) const {
 nlohmann::json MoveToCluster::arguments() const { return {{"items", items_}, {"target", target_}}; }
 
 LockCluster::LockCluster(NodeId n, InstanceSet cluster)
-    : HandEditCommand(n), cluster_(normalizedSet(std::move(cluster))) {}
+    : InstanceSetEdit(n, std::move(cluster), "cluster") {}
 HandEdits LockCluster::edit(const HandEdits& e, const Document&) const {
-    return lockCluster(e, cluster_);
+    return lockCluster(e, set_);
 }
-nlohmann::json LockCluster::arguments() const { return {{"cluster", cluster_}}; }
 
 UnlockCluster::UnlockCluster(NodeId n, InstanceSet cluster)
-    : HandEditCommand(n), cluster_(normalizedSet(std::move(cluster))) {}
+    : InstanceSetEdit(n, std::move(cluster), "cluster") {}
 HandEdits UnlockCluster::edit(const HandEdits& e, const Document&) const {
-    return unlockCluster(e, cluster_);
+    return unlockCluster(e, set_);
 }
-nlohmann::json UnlockCluster::arguments() const { return {{"cluster", cluster_}}; }
 
 ExcludeInstance::ExcludeInstance(NodeId n, InstanceSet instances)
-    : HandEditCommand(n), instances_(normalizedSet(std::move(instances))) {}
+    : InstanceSetEdit(n, std::move(instances), "instances") {}
 HandEdits ExcludeInstance::edit(const HandEdits& e, const Document&) const {
-    return excludeInstances(e, instances_);
+    return excludeInstances(e, set_);
 }
-nlohmann::json ExcludeInstance::arguments() const { return {{"instances", instances_}}; }
 
 IncludeInstance::IncludeInstance(NodeId n, InstanceSet instances)
-    : HandEditCommand(n), instances_(normalizedSet(std::move(instances))) {}
+    : InstanceSetEdit(n, std::move(instances), "instances") {}
 HandEdits IncludeInstance::edit(const HandEdits& e, const Document&) const {
-    return includeInstances(e, instances_);
+    return includeInstances(e, set_);
 }
-nlohmann::json IncludeInstance::arguments() const { return {{"instances", instances_}}; }
 
 } // namespace hlod

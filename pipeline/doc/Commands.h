@@ -142,6 +142,18 @@ private:
     std::optional<HandEdits> before_, after_;
 };
 
+// Base of the hand edits that act on one instance set (a cluster's leaf set, or meshes): holds
+// the set, normalised, and writes it as the one argument `argument` ("cluster", "instances").
+class InstanceSetEdit : public HandEditCommand {
+protected:
+    InstanceSetEdit(NodeId clusterNode, InstanceSet set, const char* argument);
+    nlohmann::json arguments() const override;
+    InstanceSet set_;
+
+private:
+    const char* argument_;
+};
+
 class MergeClusters : public HandEditCommand {
 public:
     MergeClusters(NodeId clusterNode, std::vector<InstanceSet> clusters);
@@ -156,17 +168,13 @@ private:
 };
 
 // Needs the Cluster node's current tree (the graph must have run): it gives the children.
-class SplitCluster : public HandEditCommand {
+class SplitCluster : public InstanceSetEdit {
 public:
     SplitCluster(NodeId clusterNode, InstanceSet cluster);
     std::string text() const override { return "Split cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
-
-private:
-    InstanceSet cluster_;
 };
 
 class MoveToCluster : public HandEditCommand {
@@ -183,56 +191,40 @@ private:
     InstanceSet target_;
 };
 
-class LockCluster : public HandEditCommand {
+class LockCluster : public InstanceSetEdit {
 public:
     LockCluster(NodeId clusterNode, InstanceSet cluster);
     std::string text() const override { return "Lock cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
-
-private:
-    InstanceSet cluster_;
 };
 
-class UnlockCluster : public HandEditCommand {
+class UnlockCluster : public InstanceSetEdit {
 public:
     UnlockCluster(NodeId clusterNode, InstanceSet cluster);
     std::string text() const override { return "Unlock cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
-
-private:
-    InstanceSet cluster_;
 };
 
-class ExcludeInstance : public HandEditCommand {
+class ExcludeInstance : public InstanceSetEdit {
 public:
     ExcludeInstance(NodeId clusterNode, InstanceSet instances);
     std::string text() const override { return "Exclude from HLOD"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
-
-private:
-    InstanceSet instances_;
 };
 
-class IncludeInstance : public HandEditCommand {
+class IncludeInstance : public InstanceSetEdit {
 public:
     IncludeInstance(NodeId clusterNode, InstanceSet instances);
     std::string text() const override { return "Include in HLOD"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
-
-private:
-    InstanceSet instances_;
 };
 
 } // namespace hlod

@@ -1,10 +1,13 @@
-// Helpers shared by the pipeline tests: temporary folders and file writing.
+// Helpers shared by the pipeline tests: temporary folders, file writing, expected errors.
 #pragma once
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string>
+
+#include "pipeline/core/Error.h"
 
 namespace hlod::test {
 
@@ -36,6 +39,16 @@ inline std::filesystem::path writeFile(const std::filesystem::path& p, const std
     std::ofstream out(p, std::ios::binary);
     out << text;
     return p;
+}
+
+// The message of the hlod::Error that f throws, or "no error".
+inline std::string problemOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
 }
 
 } // namespace hlod::test

@@ -94,12 +94,27 @@ protected:
         return out;
     }
 
+    // Shows the Clusters tree next to a Scene tree, both synced to the model as in the main
+    // window, with the root's children visible.
+    void showSyncedTrees() {
+        sceneModel.setScene(model.scene());
+        sceneTree.setModel(&sceneModel);
+        sync = std::make_unique<SelectionSync>(&model, &sceneTree, &sceneModel, &tree, &treeModel);
+        tree.resize(500, 600);
+        tree.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&tree));
+        tree.expandToDepth(0);
+    }
+
     ProjectSession session;
     StudioModel model;
     ClusterTreeModel treeModel;
     QTreeView tree;
     std::unique_ptr<ClusterEditActions> edits;
     std::unique_ptr<AutoRebuild> rebuild;
+    SceneTreeModel sceneModel;
+    QTreeView sceneTree;
+    std::unique_ptr<SelectionSync> sync;
 };
 
 TEST_F(HandEdit, SplitHangsTheChildrenFromTheParentAndUndoRestores) {
@@ -236,15 +251,7 @@ TEST_F(HandEdit, IncludeUndoesAnExclude) {
 }
 
 TEST_F(HandEdit, CtrlClickSelectsSeveralClustersAndEnablesMerge) {
-    SceneTreeModel sceneModel;
-    sceneModel.setScene(model.scene());
-    QTreeView sceneTree;
-    sceneTree.setModel(&sceneModel);
-    SelectionSync sync(&model, &sceneTree, &sceneModel, &tree, &treeModel);
-    tree.resize(500, 600);
-    tree.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&tree));
-    tree.expandToDepth(0);
+    ASSERT_NO_FATAL_FAILURE(showSyncedTrees());
     const std::vector<Id> inner = innerChildrenOfRoot();
     ASSERT_GE(inner.size(), 2u);
     clickRow(inner[0], Qt::NoModifier);
@@ -287,15 +294,7 @@ TEST_F(HandEdit, SeveralSelectedClustersAreAllHighlighted) {
     DisplayController display(&model, &viewport);
     viewport.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&viewport));
-    SceneTreeModel sceneModel;
-    sceneModel.setScene(model.scene());
-    QTreeView sceneTree;
-    sceneTree.setModel(&sceneModel);
-    SelectionSync sync(&model, &sceneTree, &sceneModel, &tree, &treeModel);
-    tree.resize(500, 600);
-    tree.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&tree));
-    tree.expandToDepth(0);
+    ASSERT_NO_FATAL_FAILURE(showSyncedTrees());
     const std::vector<Id> inner = innerChildrenOfRoot();
     ASSERT_GE(inner.size(), 2u);
     const std::vector<Id> both{std::min(inner[0], inner[1]), std::max(inner[0], inner[1])};

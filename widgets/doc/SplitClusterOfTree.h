@@ -16,7 +16,7 @@
 
 namespace hlod::widgets {
 
-class SplitClusterOfTree : public HandEditCommand {
+class SplitClusterOfTree : public InstanceSetEdit {
 public:
     SplitClusterOfTree(NodeId clusterNode, InstanceSet cluster, const ClusterTree& tree);
     std::string text() const override { return "Split cluster"; }
@@ -24,10 +24,8 @@ public:
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
-    nlohmann::json arguments() const override;
 
 private:
-    InstanceSet cluster_;
     std::shared_ptr<const ClusterTree> tree_;
 };
 

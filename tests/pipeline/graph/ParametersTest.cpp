@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "TestUtil.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/doc/HlodBuild.h"
 #include "pipeline/graph/Parameters.h"
@@ -14,14 +15,7 @@
 namespace hlod {
 namespace {
 
-std::string problemOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using test::problemOf;
 
 TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
     // The flags `hlod build` has always taken (README "Command-line tool").

@@ -12,14 +12,7 @@
 namespace hlod {
 namespace {
 
-std::string problemOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
+using test::problemOf;
 
 TEST(PipelineGraph, DefaultGraphIsAChainWithEveryNodePending) {
     const PipelineGraph g = PipelineGraph::makeDefault();
