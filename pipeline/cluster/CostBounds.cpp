@@ -92,8 +92,4 @@ int sizeClass(const CostModel& model, const ClusterUnit& u) {
     return size > 0.0 ? std::ilogb(size) : std::numeric_limits<int>::min();
 }
 
-double lowerBound(const CostModel& model, const ClusterUnit& x, const Region& g) {
-    return BoundQuery(model, x)(g);
-}
-
 } // namespace hlod

@@ -26,8 +26,8 @@
 // (shapeVolumeBound: the proportion is E_max^2 E_mid / V), which keeps two sets apart along
 // one axis prunable when their hull is wide in every axis.
 // Packed regions: the BVH stores regions in single precision rounded outward (PackedRegion);
-// the same bounds read either form through small accessors, and PackedPairTest is the
-// self-join's test written out per component for speed.
+// the same bounds read either form through small accessors. PackedPairTest is the pair test
+// written out per component; WideBounds.h evaluates the same terms for four regions at once.
 #pragma once
 
 #include <algorithm>
@@ -119,17 +119,6 @@ Region regionOf(const CostModel& model, const ClusterUnit& u);
 // volume (box), so clusters within a class differ in size by less than 2x.
 int sizeClass(const CostModel& model, const ClusterUnit& u);
 
-// Lower bound of mergeCost(x, g) over every cluster g described by `region`.
-double lowerBound(const CostModel& model, const ClusterUnit& x, const Region& region);
-
-// Lower bound of the hull length of the interval [a, b] and an interval of length >= w that
-// lies inside [lo, hi] (starting at some c in [lo, hi - w]): the hull max(b, c + w) - min(a, c)
-// is at least b - a, w, (lo + w) - a and b - (hi - w). Branch-free: it runs in the inner loop
-// of every search.
-inline double minHullLength(double a, double b, double lo, double hi, double w) {
-    return std::max(std::max(b - a, w), std::max(lo + w - a, b - hi + w));
-}
-
 // Lower bound of a box volume with per-axis extents of at least `e` and cross-sections of at
 // least `area` (see the header): max over the axes of e_i * max(area_i, e_j e_k).
 inline double minBoxVolume(const glm::dvec3& e, const glm::dvec3& area) {
@@ -167,62 +156,9 @@ inline double shapeVolumeBound(double k, const glm::dvec3& e, double v, double f
     return 0.0;
 }
 
-// lowerBound for one cluster x against many regions, inline for the searches' inner loop.
-// - Sphere: the centre distance is at least the distance from x's centre to the region's
-//   centre box, every radius at least minRadius (see the header).
-// - Box: per axis the merged box holds x's interval and g's, which is at least minExtent long
-//   and lies inside the region (minHullLength); its cross-sections are at least x's and the
-//   region's; its volume is also at least minVolume; the merged box lies in the hull of x and
-//   the region, which bounds the shape ratio.
-class BoundQuery {
-public:
-    BoundQuery(const CostModel& model, const ClusterUnit& x)
-        : model_(model), x_(x), xArea_(crossSections(x.box.max - x.box.min)),
-          sphere_(model.volume() == VolumeType::Sphere), hasShape_(model.k() != 0.0) {}
-
-    template <class R> double operator()(const R& g) const {
-        constexpr double kSafety = 1.0 - 1e-9;
-        const double fvSum = x_.fv + maxFvOf(g);
-        const glm::dvec3 gLo = lowCorner(g);
-        const glm::dvec3 gHi = highCorner(g);
-        if (sphere_) {
-            const glm::dvec3 c = x_.sphere.center;
-            const glm::dvec3 q = glm::clamp(c, gLo, gHi) - c;
-            const double d = std::sqrt(glm::dot(q, q));
-            const double minRadius = minRadiusOf(g);
-            const double r = std::max(std::max(x_.sphere.radius, minRadius),
-                                      (d + x_.sphere.radius + minRadius) * 0.5);
-            const double r3 = r * r * r;
-            return r3 * std::max(1.0, kSphereVolume * r3 / fvSum) * kSafety;
-        }
-        const glm::dvec3 w = minExtentOf(g);
-        const glm::dvec3 e(minHullLength(x_.box.min.x, x_.box.max.x, gLo.x, gHi.x, w.x),
-                           minHullLength(x_.box.min.y, x_.box.max.y, gLo.y, gHi.y, w.y),
-                           minHullLength(x_.box.min.z, x_.box.max.z, gLo.z, gHi.z, w.z));
-        const double v = std::max(minBoxVolume(e, glm::max(xArea_, minAreaOf(g))), minVolumeOf(g));
-        double bound = v * std::max(1.0, v / fvSum) * kSafety;
-        if (hasShape_) {
-            const glm::dvec3 ub = glm::max(x_.box.max, gHi) - glm::min(x_.box.min, gLo);
-            const double shape =
-                std::max(e.x, std::max(e.y, e.z)) / std::min(ub.x, std::min(ub.y, ub.z));
-            bound *= model_.powK(std::max(1.0, shape));
-            bound = std::max(bound, shapeVolumeBound(model_.k(), e, v, fvSum) * kSafety);
-        }
-        return bound;
-    }
-
-private:
-    static constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
-    const CostModel& model_;
-    const ClusterUnit& x_;
-    glm::dvec3 xArea_;
-    bool sphere_;
-    bool hasShape_;
-};
-
 // Lower bound of mergeCost(x, g) over every x described by region `a` and g described by `b`
-// (the spatial self-join of a level). Same argument as BoundQuery with x's exact bounds
-// replaced by its region:
+// (the spatial searches of a level; a single cluster is the region of itself alone), by the
+// argument of the header:
 // - Sphere: centres inside boxes a distance d apart are at least d apart.
 // - Box: per axis, intervals of lengths >= w_a in [a_lo, a_hi] and >= w_b in [b_lo, b_hi] have
 //   a hull of at least max(w_a, w_b, b_lo - a_hi + w_a + w_b, a_lo - b_hi + w_a + w_b); the

@@ -58,39 +58,92 @@ struct Group {
     bool alive = true;
 };
 
+// Spreads the low 21 bits of x to every third bit (Morton code interleave).
+std::uint64_t spreadBits(std::uint64_t x) {
+    x &= 0x1fffffu;
+    x = (x | x << 32) & 0x1f00000000ffffu;
+    x = (x | x << 16) & 0x1f0000ff0000ffu;
+    x = (x | x << 8) & 0x100f00f00f00f00fu;
+    x = (x | x << 4) & 0x10c30c30c30c30c3u;
+    x = (x | x << 2) & 0x1249249249249249u;
+    return x;
+}
+
+// Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres, ties by position.
+std::vector<std::uint32_t> spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units) {
+    const std::size_t n = units.size();
+    const bool box = builder.model().volume() == VolumeType::Aabb;
+    std::vector<glm::dvec3> centres(n);
+    Aabb all;
+    for (std::size_t i = 0; i < n; ++i) {
+        const ClusterUnit& u = builder.unit(units[i]);
+        centres[i] = box ? u.box.center() : u.sphere.center;
+        all.expand(centres[i]);
+    }
+    constexpr double kCells = double((1u << 21) - 1);
+    const glm::dvec3 extent = glm::max(all.max - all.min, glm::dvec3(1e-300));
+    const glm::dvec3 scale = glm::dvec3(kCells) / extent;
+    // Cell index along one axis, clamped (a NaN lands in cell 0: the order is only a layout).
+    auto cell = [&](double x) -> std::uint64_t {
+        return x >= 0.0 ? static_cast<std::uint64_t>(std::min(x, kCells)) : 0u;
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const glm::dvec3 q = (centres[i] - all.min) * scale;
+        const std::uint64_t code =
+            spreadBits(cell(q.x)) | spreadBits(cell(q.y)) << 1 | spreadBits(cell(q.z)) << 2;
+        keyed[i] = {code, i};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t i = 0; i < n; ++i)
+        order[i] = keyed[i].second;
+    return order;
+}
+
 class Level {
 public:
+    // `units` in ascending id. Internally the units are numbered in space-filling-curve order
+    // of their centres (spatialOrder), so the groups, lists and graph rows that one unit's
+    // neighbours touch lie close together in memory; the rule only ever compares ids, so the
+    // numbering changes no result.
     Level(TreeBuilder& builder, const std::vector<Id>& units, int maxChildren,
           std::size_t neighbours)
-        : builder_(builder), model_(builder.model()), units_(units),
-          cap_(static_cast<std::uint32_t>(maxChildren)), k_(neighbours) {
+        : builder_(builder), model_(builder.model()), cap_(static_cast<std::uint32_t>(maxChildren)),
+          k_(neighbours) {
         const std::size_t n = units.size();
+        positionOf_ = spatialOrder(builder, units);
+        const std::vector<std::uint32_t>& order = positionOf_;
+        units_.resize(n);
+        internalOf_.resize(n);
         groupOf_.resize(n);
         next_.assign(n, kNone);
         groups_.resize(n);
         std::vector<Region> regions(n);
         std::vector<int> classes(n);
         for (std::uint32_t i = 0; i < n; ++i) {
+            units_[i] = units[order[i]];
+            internalOf_[order[i]] = i;
             Group& g = groups_[i];
-            g.unit = builder.unit(units[i]);
-            g.key = units[i];
+            g.unit = builder.unit(units_[i]);
+            g.key = units_[i];
             g.head = g.tail = i;
             g.size = 1;
             groupOf_[i] = i;
             regions[i] = regionOf(model_, g.unit);
             classes[i] = sizeClass(model_, g.unit);
         }
-        bvh_.build(regions, classes, model_.volume() == VolumeType::Aabb);
+        bvh_.build(regions, classes, model_);
         seen_.assign(n, 0);
     }
 
-    // Cheapest partner cost of each unit in `which` (indices of units), in parallel.
+    // Cheapest partner cost of each unit in `which` (positions in ascending id), in parallel.
     std::vector<double> cheapestCosts(const std::vector<std::uint32_t>& which) const {
         std::vector<double> out(which.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 16),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                                  out[i] = cheapestUnitCost(which[i]);
+                                  out[i] = cheapestUnitCost(internalOf_[which[i]]);
                               }
                           });
         return out;
@@ -102,11 +155,6 @@ public:
         const std::size_t n = units_.size();
         lists_.assign(n * k_, Near{kInf, kNone});
         listSize_.assign(n, 0);
-        const PackedPairTest test(model_, budget);
-        // Inlined into the join's loops (out of line it costs a call per test).
-        auto exceeds = [&](PackedRef a, PackedRef b) __attribute__((always_inline)) {
-            return test.exceeds(a, b);
-        };
         // The join has already tested the bound of the two items themselves.
         auto visit = [&](std::uint32_t i, std::uint32_t j) {
             const bool iLow = units_[i] < units_[j];
@@ -117,7 +165,7 @@ public:
             offer(i, Near{cost, j});
             offer(j, Near{cost, i});
         };
-        bvh_.join(exceeds, visit);
+        bvh_.join(budget, visit);
         // Symmetric adjacency in CSR form: u ~ v when either lists the other.
         Graph& g = graph_;
         g.start.assign(n + 1, 0);
@@ -142,8 +190,23 @@ public:
         lists_.shrink_to_fit();
     }
 
-    // Rule step 3, inherited: the previous level's graph contracted by its groups.
-    void setGraph(Graph graph) { graph_ = std::move(graph); }
+    // Rule step 3, inherited: the previous level's graph contracted by its groups (rows and
+    // entries are positions in ascending id, renumbered here).
+    void setGraph(const Graph& graph) {
+        const std::size_t n = units_.size();
+        graph_.start.assign(n + 1, 0);
+        graph_.adj.resize(graph.adj.size());
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t p = positionOf(i);
+            graph_.start[i + 1] = graph_.start[i] + (graph.start[p + 1] - graph.start[p]);
+        }
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t p = positionOf(i);
+            std::uint32_t at = graph_.start[i];
+            for (std::uint32_t e = graph.start[p]; e < graph.start[p + 1]; ++e)
+                graph_.adj[at++] = internalOf_[graph.adj[e]];
+        }
+    }
 
     // Rule step 4: cheapest adjacent pair first until none is within budget and cap.
     std::size_t run(double budget, const Progress& progress) {
@@ -258,16 +321,14 @@ private:
     double cheapestUnitCost(std::uint32_t u) const {
         const Group& G = groups_[u];
         double best = kInf;
-        const BoundQuery bound(model_, G.unit);
         auto visit = [&](std::uint32_t v) {
             if (v == u) return;
             const Group& H = groups_[v];
-            if (bound(regionOf(model_, H.unit)) > best) return;
             const double cost = G.key < H.key ? model_.mergeCostWithin(G.unit, H.unit, best)
                                               : model_.mergeCostWithin(H.unit, G.unit, best);
             best = std::min(best, cost);
         };
-        bvh_.search(bound, visit, best);
+        bvh_.search(u, best, visit);
         return best;
     }
 
@@ -332,9 +393,13 @@ private:
         return id;
     }
 
+    std::uint32_t positionOf(std::uint32_t i) const { return positionOf_[i]; }
+
     TreeBuilder& builder_;
     const CostModel& model_;
-    const std::vector<Id>& units_;
+    std::vector<Id> units_;                 // internal index -> unit id (spatial order)
+    std::vector<std::uint32_t> internalOf_; // position in ascending id -> internal index
+    std::vector<std::uint32_t> positionOf_; // internal index -> position in ascending id
     std::uint32_t cap_;
     std::size_t k_;                      // neighbours kept per unit (rule step 3)
     std::vector<std::uint32_t> groupOf_; // unit -> live group holding it
@@ -398,7 +463,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
             level.buildGraph(graphBudget);
             unitsAtRebuild = units.size();
         } else {
-            level.setGraph(std::move(graph));
+            level.setGraph(graph);
         }
         if (level.run(budget, progress) == 0 && !rebuilt) {
             // The inherited graph has no pair within the budget: rebuild and rerun (nothing

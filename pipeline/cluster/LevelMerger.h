@@ -55,10 +55,12 @@
 // - Flat boxes with a zero extent: padded to a minimum extent before clustering (CostModel.h,
 //   ClusterDriver.h), so every volume and proportion ratio is finite.
 //
-// Complexity (fast implementation): per level, a BVH forest over the units (MergeBvh.h) gives
-// the sampled best() by branch and bound (CostBounds.h BoundQuery); at rebuilds the neighbour
-// lists come from one dual-tree self-join pruned with the same bound on single-precision
-// regions (CostBounds.h PackedPairTest; a BVH leaf against a subtree descends item by item).
+// Complexity (fast implementation): per level, a 4-wide BVH over the units (MergeBvh.h) gives
+// the sampled best() by branch and bound (the pair bound of CostBounds.h, four slots per
+// vector test, WideBounds.h); at rebuilds the neighbour lists come from one dual-tree
+// self-join pruned with the same bound (groups of units descend together, each unit finishes
+// alone). The units are numbered in Morton order of their centres inside a level, so a unit's
+// neighbours lie close in memory.
 // Merging then only touches the graph: a priority queue (heapified at once from every unit's
 // cheapest neighbour) holds each group's cheapest neighbour pair and is invalidated lazily (an
 // entry whose partner has since merged is recomputed when it reaches the top; the adjacent

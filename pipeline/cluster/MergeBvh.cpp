@@ -1,29 +1,26 @@
-// Median-split BVH forest for best-partner queries and the self-join (see MergeBvh.h).
+// 4-wide median-split BVH for best-partner queries and the self-join (see MergeBvh.h).
 #include "pipeline/cluster/MergeBvh.h"
 
+#include <algorithm>
+#include <array>
 #include <numeric>
+
+#include "pipeline/scene/Aabb.h"
 
 namespace hlod {
 
-namespace {
-
-constexpr std::uint32_t kLeafSize = 4;
-
-} // namespace
-
 void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
-                     bool boxModel) {
+                     const CostModel& model) {
     const auto n = static_cast<std::uint32_t>(items.size());
-    boxModel_ = boxModel;
+    model_ = &model;
+    const bool boxModel = model.volume() == VolumeType::Aabb;
     nodes_.clear();
-    nodeExtra_.clear();
-    roots_.clear();
     order_.resize(n);
-    ordered_.resize(n);
-    orderedExtra_.resize(boxModel_ ? n : 0);
+    position_.resize(n);
+    packed_.resize(n);
+    packedExtra_.assign(n, PackedExtra{});
     if (n == 0) return;
-    nodes_.reserve(2 * (n / kLeafSize + 1) + 64);
-    if (boxModel_) nodeExtra_.reserve(nodes_.capacity());
+    nodes_.reserve(n / 2 + 16);
     std::vector<glm::dvec3> centers(n);
     for (std::uint32_t i = 0; i < n; ++i)
         centers[i] = items[i].box.center();
@@ -31,38 +28,29 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     std::iota(order_.begin(), order_.end(), 0u);
     std::stable_sort(order_.begin(), order_.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return sizeClass[a] < sizeClass[b]; });
+    std::vector<Slot> tops;
     std::uint32_t begin = 0;
     while (begin < n) {
         std::uint32_t end = begin + 1;
         while (end < n && sizeClass[order_[end]] == sizeClass[order_[begin]])
             ++end;
-        roots_.push_back(buildRange(begin, end, items, centers));
+        tops.push_back(buildRange(begin, end, items, centers));
         begin = end;
     }
-    PackedExtra unused{};
-    for (std::uint32_t i = 0; i < n; ++i) {
-        packRegion(items[order_[i]], boxModel_, ordered_[i], boxModel_ ? orderedExtra_[i] : unused);
+    // The class hierarchies under one top, four slots per node in class order.
+    while (tops.size() > 1 || (tops[0].child & kItem) != 0) {
+        std::vector<Slot> above;
+        for (std::size_t i = 0; i < tops.size(); i += 4) {
+            above.push_back(makeNode(tops.data() + i, std::min<std::size_t>(4, tops.size() - i)));
+        }
+        tops = std::move(above);
     }
+    root_ = tops[0].child;
+    packRegion(tops[0].region, boxModel, rootRegion_, rootExtra_);
 }
 
-std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
-                                   const std::vector<Region>& items,
-                                   const std::vector<glm::dvec3>& centers) {
-    const auto id = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.push_back(Node{});
-    if (boxModel_) nodeExtra_.emplace_back();
-    PackedExtra unused{};
-    PackedExtra& extra = boxModel_ ? nodeExtra_[id] : unused;
-    if (end - begin <= kLeafSize) {
-        Region region = emptyRegion();
-        for (std::uint32_t i = begin; i < end; ++i) {
-            includeRegion(region, items[order_[i]]);
-        }
-        packRegion(region, boxModel_, nodes_[id].region, extra);
-        nodes_[id].first = begin;
-        nodes_[id].count = end - begin;
-        return id;
-    }
+std::uint32_t MergeBvh::medianSplit(std::uint32_t begin, std::uint32_t end,
+                                    const std::vector<glm::dvec3>& centers) {
     Aabb centerBox;
     for (std::uint32_t i = begin; i < end; ++i)
         centerBox.expand(centers[order_[i]]);
@@ -76,16 +64,56 @@ std::uint32_t MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
                          const double cb = centers[b][axis];
                          return ca < cb || (ca == cb && a < b);
                      });
-    const std::uint32_t left = buildRange(begin, mid, items, centers);
-    const std::uint32_t right = buildRange(mid, end, items, centers);
-    // The region bottom-up from the children (one merge per node, not one per item and
-    // depth); the children's packed regions are floats already, so packing their union is
-    // exact. nodeExtra_ may have grown: take the slot again.
-    Region region = unpackRegion(nodeRef(left));
-    includeRegion(region, unpackRegion(nodeRef(right)));
-    packRegion(region, boxModel_, nodes_[id].region, boxModel_ ? nodeExtra_[id] : unused);
-    nodes_[id].first = right;
-    return id;
+    return mid;
+}
+
+MergeBvh::Slot MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
+                                    const std::vector<Region>& items,
+                                    const std::vector<glm::dvec3>& centers) {
+    if (end - begin == 1) return Slot{kItem | begin, end, items[order_[begin]]};
+    std::array<std::uint32_t, 5> cut{begin, begin + 1, begin + 2, begin + 3, end};
+    std::size_t count = end - begin; // parts
+    if (count > 4) {
+        count = 4;
+        cut[2] = medianSplit(begin, end, centers);
+        cut[1] = medianSplit(begin, cut[2], centers);
+        cut[3] = medianSplit(cut[2], end, centers);
+    } else {
+        cut[count] = end;
+    }
+    std::array<Slot, 4> parts;
+    for (std::size_t i = 0; i < count; ++i)
+        parts[i] = buildRange(cut[i], cut[i + 1], items, centers);
+    return makeNode(parts.data(), count);
+}
+
+MergeBvh::Slot MergeBvh::makeNode(const Slot* parts, std::size_t count) {
+    const auto id = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    Node& node = nodes_.back();
+    Slot out{id, 0, emptyRegion()};
+    for (std::size_t l = 0; l < count; ++l) {
+        const Slot& part = parts[l];
+        const bool boxModel = model_->volume() == VolumeType::Aabb;
+        if ((part.child & kItem) != 0) {
+            // An item's position is final once it is a slot (every split around it is done):
+            // its packed region is kept for the queries it makes.
+            const std::uint32_t p = part.child & ~kItem;
+            position_[order_[p]] = p;
+            packRegion(part.region, boxModel, packed_[p], packedExtra_[p]);
+            setLane(node.slots, static_cast<int>(l), packed_[p], packedExtra_[p]);
+        } else {
+            PackedRegion r{};
+            PackedExtra e{};
+            packRegion(part.region, boxModel, r, e);
+            setLane(node.slots, static_cast<int>(l), r, e);
+        }
+        node.child[l] = part.child;
+        node.end[l] = part.end;
+        includeRegion(out.region, part.region);
+        out.end = std::max(out.end, part.end);
+    }
+    return out;
 }
 
 } // namespace hlod

@@ -1,210 +1,253 @@
-// Bounding volume hierarchies over the units of one clustering level, for branch-and-bound
+// Bounding volume hierarchy over the units of one clustering level, for branch-and-bound
 // "cheapest partner" queries and the neighbour self-join (LevelMerger.cpp).
 //
-// Based on the classic median-split BVH (e.g. Ericson, "Real-Time Collision Detection",
-// 6.2): top-down, split at the median centroid of the longest axis, leaves of up to four
-// items (fewer node pairs in the self-join for a few more item tests; four measured best).
+// A 4-wide BVH: every node has four slots, each holding either one item or a child node, and
+// keeps the four slots' regions side by side (WideBounds.h), so one node test bounds the cost
+// against all four at once in SIMD lanes, without a branch per slot. Built top-down like the
+// classic median-split BVH (e.g. Ericson, "Real-Time Collision Detection", 6.2), two median
+// splits per node (the longest axis of the centroids, then each half's longest axis): a
+// range of five or more items becomes four parts, a range of two to four items a node of item
+// slots. Wide nodes (as in Embree's BVH4) halve the depth and replace the branchy node-by-node
+// recursion of a binary tree by one vector test per node.
 // One hierarchy per size class (the caller's key, e.g. the binary exponent of the radius):
 // real scenes mix bolts and floor plates, and a node holding both can bound neither the cost
 // of joining a big part (at least its volume) nor that of a small one (low fill), so mixed
-// nodes would be visited from everywhere. Within a class the bounds stay tight.
-// Each node keeps a Region (CostBounds.h): a box and the aggregates the cost bounds need
+// nodes would be visited from everywhere. Within a class the bounds stay tight. The class
+// hierarchies hang from one top (slots grouped four by four in class order), so every query
+// starts at one node.
+// Each slot keeps a Region (CostBounds.h): a box and the aggregates the cost bounds need
 // (largest F*V, smallest radius, volume, extents and cross-sections below it), computed
-// bottom-up from the children.
-// Storage: nodes and items keep their regions packed in single precision, rounded outward
-// (CostBounds.h PackedRegion), so every bound computed from them stays a valid lower bound,
-// only a little looser. Nodes are laid out depth first (the left child follows its parent), so
-// a node is 40 bytes and an item 32 (plus 24 for the per-axis minima, box model only) instead
-// of 136: the searches are bound by memory traffic.
-// The shape never changes a query's answer: the search visits every node whose bound does
-// not exceed the best cost found, so ties are resolved by the caller's key order alone, and
-// the self-join reports every pair that its test does not reject, once.
+// bottom-up in double precision and stored packed in single precision rounded outward
+// (PackedRegion), so every bound computed from them stays a valid lower bound, only a little
+// looser. A node is four cache lines.
+// The shape never changes a query's answer: the search visits every slot whose bound does not
+// exceed the best cost found, so ties are resolved by the caller's key order alone, and the
+// self-join reports every pair that its test does not reject, once.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
-#include "pipeline/cluster/CostBounds.h"
-#include "pipeline/scene/Aabb.h"
+#include "pipeline/cluster/WideBounds.h"
 
 namespace hlod {
 
 class MergeBvh {
 public:
-    struct Node {
-        PackedRegion region;
-        std::uint32_t first = 0; // leaf: first index into order_; inner: right child (the left
-                                 // child is the next node)
-        std::uint32_t count = 0; // leaf: item count; inner: 0
+    struct alignas(64) Node {
+        WideRegions slots{};
+        std::uint32_t child[4] = {}; // kItem | the item's position, or a node index
+        std::uint32_t end[4] = {};   // one past the last item position below the slot; 0: unused
     };
+    static constexpr std::uint32_t kItem = 0x80000000u;
 
-    // Builds one hierarchy per distinct `sizeClass` over items 0..n-1. `boxModel`: the regions
-    // are the box model's, whose bounds read the per-axis minima (CostBounds.h).
-    void build(const std::vector<Region>& items, const std::vector<int>& sizeClass, bool boxModel);
+    // Builds the hierarchy over items 0..n-1 with their regions and size classes, for the
+    // bounds of `model` (which must outlive the queries).
+    void build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
+               const CostModel& model);
 
-    // Best-first descent: `bound(region)` (a PackedRef) is a lower bound of any answer below a
-    // node; nodes whose bound exceeds `threshold` are skipped; `visit(item)` sees every other
-    // item and may lower `threshold` (a reference the visitor updates).
-    template <class Bound, class Visit>
-    void search(Bound&& bound, Visit&& visit, const double& threshold) const;
+    // Cheapest-partner search for item `self`: nearest slots first, skipping every slot whose
+    // lower bound exceeds `threshold`; `visit(item)` sees every other item not skipped (and
+    // may see `self`) and may lower `threshold` (a reference the visitor updates).
+    template <class Visit>
+    void search(std::uint32_t self, const double& threshold, Visit&& visit) const;
 
     // Self-join: calls visit(i, j) once for every unordered pair of distinct items whose
-    // packed regions (and those of the nodes holding them) are not separated by
-    // `exceeds(a, b)` (PackedRefs; a lower bound above the threshold). Dual-tree traversal, so
-    // the descent is shared by all items instead of one per item.
-    template <class Exceeds, class Visit> void join(Exceeds&& exceeds, Visit&& visit) const {
-        for (std::size_t i = 0; i < roots_.size(); ++i) {
-            for (std::size_t j = i; j < roots_.size(); ++j) {
-                joinNodes(roots_[i], roots_[j], exceeds, visit);
-            }
-        }
-    }
+    // pair bound (and those of the slots holding them) does not exceed `threshold`.
+    // Dual-tree: the hierarchy's own nodes are the query groups. A group tests the target
+    // lanes its parent kept, opens the target nodes at least as large as itself and keeps the
+    // rest for its parts; an item finally descends what its group kept. Only slots holding
+    // items after the query's first item (in the hierarchy's order) are tested, so each pair
+    // is met once, from its first item.
+    template <class Visit> void join(double threshold, Visit&& visit) const;
 
 private:
-    PackedRef nodeRef(std::uint32_t n) const {
-        return PackedRef{&nodes_[n].region, boxModel_ ? &nodeExtra_[n] : nullptr};
+    // A target node and the lanes of it still to test.
+    struct Entry {
+        std::uint32_t node;
+        unsigned mask;
+    };
+    using JoinScratch = std::vector<std::vector<Entry>>; // one list per query depth
+    static constexpr std::size_t kMaxDepth = 64;
+
+    template <class Visit>
+    void joinGroup(const PackedRegion& region, const PackedExtra& extra, std::uint32_t q,
+                   std::uint32_t begin, const std::vector<Entry>& targets, std::size_t depth,
+                   double threshold, Visit& visit, JoinScratch& scratch) const;
+    template <class Visit>
+    void joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
+                  Visit& visit) const;
+    // Lanes holding an item after position p (each pair is met from its first item only).
+    static unsigned laterThan(const Node& node, std::uint32_t p) {
+        unsigned out = 0;
+        for (int l = 0; l < 4; ++l)
+            out |= node.end[l] > p + 1 ? 1u << l : 0u;
+        return out;
     }
-    PackedRef itemRef(std::uint32_t i) const {
-        return PackedRef{&ordered_[i], boxModel_ ? &orderedExtra_[i] : nullptr};
+    static double diagonal2(const PackedRegion& r) {
+        double d = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const double x = static_cast<double>(r.hi[i]) - r.lo[i];
+            d += x * x;
+        }
+        return d;
+    }
+    static double laneDiagonal2(const WideRegions& w, int l) {
+        double d = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const double x = static_cast<double>(w.hi[i][l]) - w.lo[i][l];
+            d += x * x;
+        }
+        return d;
     }
 
-    template <class Exceeds, class Visit>
-    void joinNodes(std::uint32_t a, std::uint32_t b, Exceeds& exceeds, Visit& visit) const;
-    template <class Exceeds, class Visit>
-    void joinItem(std::uint32_t i, std::uint32_t node, Exceeds& exceeds, Visit& visit) const;
+    struct Slot {
+        std::uint32_t child;
+        std::uint32_t end;
+        Region region;
+    };
 
-    std::uint32_t buildRange(std::uint32_t begin, std::uint32_t end,
-                             const std::vector<Region>& items,
-                             const std::vector<glm::dvec3>& centers);
+    WideQuery queryOf(std::uint32_t position) const {
+        return WideQuery(*model_, packed_[position], packedExtra_[position]);
+    }
+    Slot buildRange(std::uint32_t begin, std::uint32_t end, const std::vector<Region>& items,
+                    const std::vector<glm::dvec3>& centers);
+    Slot makeNode(const Slot* parts, std::size_t count);
+    std::uint32_t medianSplit(std::uint32_t begin, std::uint32_t end,
+                              const std::vector<glm::dvec3>& centers);
 
-    bool boxModel_ = false;
+    const CostModel* model_ = nullptr;
     std::vector<Node> nodes_;
-    std::vector<PackedExtra> nodeExtra_; // box model: per node
-    std::vector<std::uint32_t> roots_;
-    std::vector<std::uint32_t> order_;      // items, leaf ranges contiguous
-    std::vector<PackedRegion> ordered_;     // the items' regions in order_ (contiguous leaves)
-    std::vector<PackedExtra> orderedExtra_; // box model: per item in order_
+    std::uint32_t root_ = 0;    // valid when nodes_ is not empty
+    PackedRegion rootRegion_{}; // the region of everything
+    PackedExtra rootExtra_{};
+    std::vector<std::uint32_t> order_;     // position -> item; leaf ranges contiguous
+    std::vector<std::uint32_t> position_;  // item -> position
+    std::vector<PackedRegion> packed_;     // by position
+    std::vector<PackedExtra> packedExtra_; // by position (box model)
 };
 
-template <class Bound, class Visit>
-void MergeBvh::search(Bound&& bound, Visit&& visit, const double& threshold) const {
-    // Hierarchies in increasing order of their root bound: the likely answers come first and
-    // lower the threshold for the rest.
-    std::array<std::pair<double, std::uint32_t>, 64> local;
-    std::vector<std::pair<double, std::uint32_t>> heapRoots;
-    std::pair<double, std::uint32_t>* roots = local.data();
-    if (roots_.size() > local.size()) {
-        heapRoots.resize(roots_.size());
-        roots = heapRoots.data();
-    }
-    for (std::size_t i = 0; i < roots_.size(); ++i) {
-        roots[i] = {bound(nodeRef(roots_[i])), roots_[i]};
-    }
-    std::sort(roots, roots + roots_.size());
-    // Median splits keep each depth below 40 for any item count that fits in memory; each
-    // level pushes at most one deferred sibling.
-    struct Entry {
+// Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
+// items, plus the item) and the tops above them add log4 of the class count (at most 6 for
+// the 2,100 binary exponents of a double), so a descent's stack (at most four slots pushed per
+// node popped) fits in 128 entries and the join's group recursion in kMaxDepth levels.
+template <class Visit>
+void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    const WideQuery q = queryOf(position_[self]);
+    struct Pending {
         std::uint32_t node;
         double lb;
     };
-    std::array<Entry, 96> stack;
-    for (std::size_t r = 0; r < roots_.size(); ++r) {
-        const auto [rootBound, root] = roots[r];
-        if (rootBound > threshold) break;
+    std::array<Pending, 128> stack;
+    std::size_t top = 0;
+    stack[top++] = Pending{root_, 0.0};
+    while (top > 0) {
+        const Pending e = stack[--top];
+        if (e.lb > threshold) continue;
+        const Node& n = nodes_[e.node];
+        double lb[4];
+        q.bounds(n.slots, lb);
+        // Lanes in ascending bound order (insertion sort of at most four).
+        int lane[4];
+        int used = 0;
+        for (int l = 0; l < 4; ++l) {
+            if (n.end[l] == 0) continue;
+            int at = used++;
+            while (at > 0 && lb[lane[at - 1]] > lb[l]) {
+                lane[at] = lane[at - 1];
+                --at;
+            }
+            lane[at] = l;
+        }
+        // Items at once, nearest first; nodes pushed farthest first so the nearest pops next.
+        for (int i = 0; i < used; ++i) {
+            const int l = lane[i];
+            if ((n.child[l] & kItem) != 0 && lb[l] <= threshold) visit(order_[n.child[l] & ~kItem]);
+        }
+        for (int i = used - 1; i >= 0; --i) {
+            const int l = lane[i];
+            if ((n.child[l] & kItem) == 0 && lb[l] <= threshold)
+                stack[top++] = Pending{n.child[l], lb[l]};
+        }
+    }
+}
+
+template <class Visit> void MergeBvh::join(double threshold, Visit&& visit) const {
+    if (nodes_.empty()) return;
+    JoinScratch scratch(kMaxDepth);
+    const std::vector<Entry> all{Entry{root_, 0xfu}};
+    joinGroup(rootRegion_, rootExtra_, root_, 0, all, 0, threshold, visit, scratch);
+}
+
+template <class Visit>
+void MergeBvh::joinGroup(const PackedRegion& region, const PackedExtra& extra, std::uint32_t q,
+                         std::uint32_t begin, const std::vector<Entry>& targets, std::size_t depth,
+                         double threshold, Visit& visit, JoinScratch& scratch) const {
+    const WideQuery query(*model_, region, extra);
+    const double size = diagonal2(region);
+    // The targets' lanes this group may still pair with; a node lane at least as large as the
+    // group is opened here, a smaller one is left for the group's parts to test.
+    std::vector<Entry>& kept = scratch[depth];
+    kept.clear();
+    std::array<Entry, 128> stack;
+    for (const Entry& target : targets) {
         std::size_t top = 0;
-        stack[top++] = Entry{root, rootBound};
+        stack[top++] = target;
         while (top > 0) {
             const Entry e = stack[--top];
-            if (e.lb > threshold) continue;
-            const Node& n = nodes_[e.node];
-            if (n.count > 0) {
-                for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-                    visit(order_[i]);
+            const Node& node = nodes_[e.node];
+            const unsigned keep =
+                e.mask & laterThan(node, begin) & ~query.exceeds(node.slots, threshold);
+            unsigned open = 0;
+            for (unsigned m = keep; m != 0; m &= m - 1) {
+                const int l = __builtin_ctz(m);
+                if ((node.child[l] & kItem) == 0 && laneDiagonal2(node.slots, l) > size) {
+                    open |= 1u << l;
+                    stack[top++] = Entry{node.child[l], 0xfu};
                 }
-                continue;
             }
-            const std::uint32_t left = e.node + 1;
-            const double lbA = bound(nodeRef(left));
-            const double lbB = bound(nodeRef(n.first));
-            // Push the farther child first so the nearer one is explored first.
-            const bool aFirst = lbA <= lbB;
-            const Entry near{aFirst ? left : n.first, aFirst ? lbA : lbB};
-            const Entry far{aFirst ? n.first : left, aFirst ? lbB : lbA};
-            if (far.lb <= threshold) stack[top++] = far;
-            if (near.lb <= threshold) stack[top++] = near;
+            if ((keep & ~open) != 0) kept.push_back(Entry{e.node, keep & ~open});
         }
     }
-}
-
-template <class Exceeds, class Visit>
-void MergeBvh::joinNodes(std::uint32_t a, std::uint32_t b, Exceeds& exceeds, Visit& visit) const {
-    const Node& A = nodes_[a];
-    const Node& B = nodes_[b];
-    if (exceeds(nodeRef(a), nodeRef(b))) return;
-    if (A.count > 0 && B.count > 0) {
-        for (std::uint32_t i = A.first; i < A.first + A.count; ++i) {
-            const PackedRef ri = itemRef(i);
-            const std::uint32_t from = a == b ? i + 1 : B.first;
-            for (std::uint32_t j = from; j < B.first + B.count; ++j) {
-                if (!exceeds(ri, itemRef(j))) visit(order_[i], order_[j]);
-            }
-        }
-        return;
-    }
-    if (A.count > 0 || B.count > 0) {
-        // A leaf against a subtree: each of the leaf's items descends on its own, because the
-        // leaf's region spans the space between its items (wide in a sparse size class) and
-        // would keep every node in between.
-        const Node& leaf = A.count > 0 ? A : B;
-        const std::uint32_t tree = A.count > 0 ? b : a;
-        for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i) {
-            joinItem(i, tree, exceeds, visit);
-        }
-        return;
-    }
-    const std::uint32_t aRight = A.first, bRight = B.first;
-    if (a == b) {
-        joinNodes(a + 1, a + 1, exceeds, visit);
-        joinNodes(a + 1, aRight, exceeds, visit);
-        joinNodes(aRight, aRight, exceeds, visit);
-        return;
-    }
-    // Split the larger node.
-    auto diagonal2 = [](const PackedRegion& r) {
-        const float x = r.hi[0] - r.lo[0], y = r.hi[1] - r.lo[1], z = r.hi[2] - r.lo[2];
-        return x * x + y * y + z * z;
-    };
-    if (diagonal2(A.region) >= diagonal2(B.region)) {
-        joinNodes(a + 1, b, exceeds, visit);
-        joinNodes(aRight, b, exceeds, visit);
-    } else {
-        joinNodes(a, b + 1, exceeds, visit);
-        joinNodes(a, bRight, exceeds, visit);
-    }
-}
-
-template <class Exceeds, class Visit>
-void MergeBvh::joinItem(std::uint32_t i, std::uint32_t node, Exceeds& exceeds, Visit& visit) const {
-    const PackedRef ri = itemRef(i);
-    // Depth-first over the subtree with an explicit stack (depth < 40, see search()).
-    std::array<std::uint32_t, 64> stack;
-    std::size_t top = 0;
-    stack[top++] = node;
-    while (top > 0) {
-        const std::uint32_t n = stack[--top];
-        const Node& N = nodes_[n];
-        if (exceeds(ri, nodeRef(n))) continue;
-        if (N.count > 0) {
-            for (std::uint32_t j = N.first; j < N.first + N.count; ++j) {
-                if (!exceeds(ri, itemRef(j))) visit(order_[i], order_[j]);
-            }
+    const Node& group = nodes_[q];
+    for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
+        const std::uint32_t c = group.child[l];
+        if ((c & kItem) != 0) {
+            joinItem(c & ~kItem, kept, threshold, visit);
             continue;
         }
-        stack[top++] = N.first;
-        stack[top++] = n + 1;
+        PackedRegion r{};
+        PackedExtra e{};
+        getLane(group.slots, l, r, e);
+        joinGroup(r, e, c, l == 0 ? begin : group.end[l - 1], kept, depth + 1, threshold, visit,
+                  scratch);
+    }
+}
+
+template <class Visit>
+void MergeBvh::joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
+                        Visit& visit) const {
+    const WideQuery query = queryOf(p);
+    std::array<Entry, 128> stack;
+    for (const Entry& target : targets) {
+        std::size_t top = 0;
+        stack[top++] = target;
+        while (top > 0) {
+            const Entry e = stack[--top];
+            const Node& node = nodes_[e.node];
+            unsigned keep = e.mask & laterThan(node, p) & ~query.exceeds(node.slots, threshold);
+            for (; keep != 0; keep &= keep - 1) {
+                const std::uint32_t c = node.child[__builtin_ctz(keep)];
+                if ((c & kItem) != 0) {
+                    visit(order_[p], order_[c & ~kItem]);
+                } else {
+                    stack[top++] = Entry{c, 0xfu};
+                }
+            }
+        }
     }
 }
 

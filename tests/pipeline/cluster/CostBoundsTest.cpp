@@ -101,7 +101,7 @@ TEST(CostBounds, PackedPairTestNeverRejectsARealPair) {
                     EXPECT_FALSE(test.exceeds(pa.ref(boxModel), pb.ref(boxModel)));
                     EXPECT_FALSE(test.exceeds(item.ref(boxModel), pb.ref(boxModel)));
                     EXPECT_FALSE(pairBoundExceeds(m, pa.ref(boxModel), pb.ref(boxModel), cost));
-                    EXPECT_LE(BoundQuery(m, a)(pb.ref(boxModel)), cost);
+                    EXPECT_LE(pairLowerBound(m, item.ref(boxModel), pb.ref(boxModel)), cost);
                     // Written out per component, it answers as the generic test does.
                     for (double t : {cost * 0.25, cost * 0.9, cost * 4.0}) {
                         EXPECT_EQ(PackedPairTest(m, t).exceeds(pa.ref(boxModel), pb.ref(boxModel)),

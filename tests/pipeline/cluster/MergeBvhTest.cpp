@@ -1,0 +1,199 @@
+// The 4-wide BVH of level merging (pipeline/cluster/MergeBvh.h) and its vector bounds
+// (pipeline/cluster/WideBounds.h): each lane answers as the scalar packed test does, the
+// self-join reports every pair within the threshold once and nothing its item test rejects,
+// and the search finds the cheapest partner.
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/cluster/MergeBvh.h"
+
+namespace hlod {
+namespace {
+
+struct Model {
+    VolumeType volume;
+    double k;
+};
+
+const Model kModels[] = {{VolumeType::Sphere, 0.0}, {VolumeType::Aabb, 0.0},
+                         {VolumeType::Aabb, 0.5},   {VolumeType::Aabb, 1.0},
+                         {VolumeType::Aabb, 1.5},   {VolumeType::Aabb, 2.0}};
+
+// Leaves of mixed size (three decades, some flat or long) in a cube of side `side`.
+std::vector<ClusterUnit> randomUnits(const CostModel& m, std::size_t n, double side,
+                                     std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<ClusterUnit> out;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3 lo(unit(rng) * side, unit(rng) * side, unit(rng) * side);
+        const double s = 0.05 * std::pow(10.0, 3.0 * unit(rng));
+        glm::dvec3 e(s * (0.2 + unit(rng)), s * (0.2 + unit(rng)), s * (0.2 + unit(rng)));
+        if (i % 7 == 0) e[i % 3] = 0.0; // flat: padded by leaf()
+        if (i % 11 == 0) e[(i + 1) % 3] *= 20.0;
+        const Aabb box{lo, lo + e};
+        out.push_back(m.leaf(Sphere{box.center(), glm::length(e) * 0.5}, box, 1e-3));
+    }
+    return out;
+}
+
+MergeBvh buildOver(const CostModel& m, const std::vector<ClusterUnit>& units) {
+    std::vector<Region> regions;
+    std::vector<int> classes;
+    for (const ClusterUnit& u : units) {
+        regions.push_back(regionOf(m, u));
+        classes.push_back(sizeClass(m, u));
+    }
+    MergeBvh bvh;
+    bvh.build(regions, classes, m);
+    return bvh;
+}
+
+double cost(const CostModel& m, const std::vector<ClusterUnit>& u, std::size_t i, std::size_t j) {
+    return i < j ? m.mergeCost(u[i], u[j]) : m.mergeCost(u[j], u[i]);
+}
+
+TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const Model& model : kModels) {
+        const CostModel m(model.volume, model.k);
+        const bool boxModel = model.volume == VolumeType::Aabb;
+        const std::vector<ClusterUnit> units = randomUnits(m, 400, 30.0, 9);
+        for (int round = 0; round < 300; ++round) {
+            // A query region (one unit or the union of a few) against four slot regions.
+            auto region = [&](std::size_t count) {
+                Region r = emptyRegion();
+                for (std::size_t c = 0; c < count; ++c) {
+                    includeRegion(r, regionOf(m, units[rng() % units.size()]));
+                }
+                return r;
+            };
+            PackedRegion qr{};
+            PackedExtra qe{};
+            packRegion(region(1 + rng() % 3), boxModel, qr, qe);
+            WideRegions w{};
+            PackedRegion sr[4]{};
+            PackedExtra se[4]{};
+            for (int l = 0; l < 4; ++l) {
+                packRegion(region(1 + rng() % 4), boxModel, sr[l], se[l]);
+                setLane(w, l, sr[l], se[l]);
+                PackedRegion back{};
+                PackedExtra backExtra{};
+                getLane(w, l, back, backExtra);
+                EXPECT_EQ(back.maxFv, sr[l].maxFv);
+                EXPECT_EQ(back.lo[2], sr[l].lo[2]);
+            }
+            const WideQuery query(m, qr, qe);
+            double bounds[4];
+            query.bounds(w, bounds);
+            const PackedRef q{&qr, boxModel ? &qe : nullptr};
+            for (int l = 0; l < 4; ++l) {
+                const PackedRef s{&sr[l], boxModel ? &se[l] : nullptr};
+                const double scalar = pairLowerBound(m, q, s);
+                EXPECT_NEAR(bounds[l], scalar, 1e-12 * scalar);
+                // Thresholds around the bound, where the verdict flips.
+                for (double f : {0.5, 0.999999, 1.000001, 2.0, 1e3 * unit(rng)}) {
+                    const double t = scalar * f;
+                    const bool lane = (query.exceeds(w, t) >> l & 1u) != 0;
+                    EXPECT_EQ(lane, PackedPairTest(m, t).exceeds(q, s))
+                        << toString(model.volume) << " k=" << model.k << " lane " << l;
+                }
+            }
+        }
+    }
+}
+
+TEST(MergeBvh, JoinReportsEveryPairWithinTheThresholdOnce) {
+    for (const Model& model : kModels) {
+        const CostModel m(model.volume, model.k);
+        const bool boxModel = model.volume == VolumeType::Aabb;
+        for (std::size_t n : {1u, 2u, 5u, 17u, 300u}) {
+            const std::vector<ClusterUnit> units = randomUnits(m, n, 40.0, 20 + n);
+            const MergeBvh bvh = buildOver(m, units);
+            // A threshold near the median pair cost, so some pairs are in and most are out.
+            std::vector<double> costs;
+            for (std::size_t i = 0; i < n; ++i) {
+                for (std::size_t j = i + 1; j < n; ++j)
+                    costs.push_back(cost(m, units, i, j));
+            }
+            std::sort(costs.begin(), costs.end());
+            const double threshold = costs.empty() ? 1.0 : costs[costs.size() / 20];
+            std::multiset<std::pair<std::uint32_t, std::uint32_t>> seen;
+            bvh.join(threshold, [&](std::uint32_t i, std::uint32_t j) {
+                EXPECT_NE(i, j);
+                seen.emplace(std::min(i, j), std::max(i, j));
+            });
+            const PackedPairTest test(m, threshold);
+            std::size_t within = 0;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                for (std::uint32_t j = i + 1; j < n; ++j) {
+                    const std::size_t count = seen.count({i, j});
+                    EXPECT_LE(count, 1u) << "pair " << i << "," << j << " reported twice";
+                    if (cost(m, units, i, j) <= threshold) {
+                        ++within;
+                        EXPECT_EQ(count, 1u) << toString(model.volume) << " k=" << model.k
+                                             << " misses pair " << i << "," << j;
+                    }
+                    if (count == 1) {
+                        PackedRegion a{}, b{};
+                        PackedExtra ae{}, be{};
+                        packRegion(regionOf(m, units[i]), boxModel, a, ae);
+                        packRegion(regionOf(m, units[j]), boxModel, b, be);
+                        EXPECT_FALSE(test.exceeds(PackedRef{&a, boxModel ? &ae : nullptr},
+                                                  PackedRef{&b, boxModel ? &be : nullptr}));
+                    }
+                }
+            }
+            if (n >= 17) {
+                EXPECT_GT(within, 0u);
+                EXPECT_LT(seen.size(), n * (n - 1) / 2) << "nothing was pruned";
+            }
+        }
+    }
+}
+
+TEST(MergeBvh, SearchFindsTheCheapestPartner) {
+    for (const Model& model : kModels) {
+        const CostModel m(model.volume, model.k);
+        const std::vector<ClusterUnit> units = randomUnits(m, 500, 60.0, 77);
+        const MergeBvh bvh = buildOver(m, units);
+        for (std::uint32_t u = 0; u < units.size(); u += 7) {
+            double best = std::numeric_limits<double>::infinity();
+            std::size_t visited = 0;
+            bvh.search(u, best, [&](std::uint32_t v) {
+                ++visited;
+                if (v != u) best = std::min(best, cost(m, units, u, v));
+            });
+            double expected = std::numeric_limits<double>::infinity();
+            for (std::uint32_t v = 0; v < units.size(); ++v) {
+                if (v != u) expected = std::min(expected, cost(m, units, u, v));
+            }
+            EXPECT_EQ(best, expected) << toString(model.volume) << " k=" << model.k;
+            EXPECT_LT(visited, units.size()) << "the search visited everything";
+        }
+    }
+}
+
+TEST(MergeBvh, EmptyAndSingleItemHierarchies) {
+    const CostModel m(VolumeType::Aabb, 1.0);
+    MergeBvh empty;
+    empty.build({}, {}, m);
+    int calls = 0;
+    empty.join(1e9, [&](std::uint32_t, std::uint32_t) { ++calls; });
+    EXPECT_EQ(calls, 0);
+    const std::vector<ClusterUnit> one = randomUnits(m, 1, 1.0, 1);
+    const MergeBvh single = buildOver(m, one);
+    single.join(1e30, [&](std::uint32_t, std::uint32_t) { ++calls; });
+    double best = std::numeric_limits<double>::infinity();
+    single.search(0, best, [&](std::uint32_t v) { EXPECT_EQ(v, 0u); });
+    EXPECT_EQ(calls, 0);
+}
+
+} // namespace
+} // namespace hlod
