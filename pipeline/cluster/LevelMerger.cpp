@@ -108,9 +108,9 @@ public:
     // neighbours touch lie close together in memory; the rule only ever compares ids, so the
     // numbering changes no result.
     Level(TreeBuilder& builder, const std::vector<Id>& units, int maxChildren,
-          std::size_t neighbours)
+          std::size_t neighbours, MergeBvh::Simd simd)
         : builder_(builder), model_(builder.model()), cap_(static_cast<std::uint32_t>(maxChildren)),
-          k_(neighbours) {
+          k_(neighbours), simd_(simd) {
         const std::size_t n = units.size();
         positionOf_ = spatialOrder(builder, units);
         const std::vector<std::uint32_t>& order = positionOf_;
@@ -165,7 +165,7 @@ public:
             offer(i, Near{cost, j});
             offer(j, Near{cost, i});
         };
-        bvh_.join(budget, visit);
+        bvh_.join(budget, visit, simd_);
         // Symmetric adjacency in CSR form: u ~ v when either lists the other.
         Graph& g = graph_;
         g.start.assign(n + 1, 0);
@@ -328,7 +328,7 @@ private:
                                               : model_.mergeCostWithin(H.unit, G.unit, best);
             best = std::min(best, cost);
         };
-        bvh_.search(u, best, visit);
+        bvh_.search(u, best, visit, simd_);
         return best;
     }
 
@@ -401,7 +401,8 @@ private:
     std::vector<std::uint32_t> internalOf_; // position in ascending id -> internal index
     std::vector<std::uint32_t> positionOf_; // internal index -> position in ascending id
     std::uint32_t cap_;
-    std::size_t k_;                      // neighbours kept per unit (rule step 3)
+    std::size_t k_; // neighbours kept per unit (rule step 3)
+    MergeBvh::Simd simd_;
     std::vector<std::uint32_t> groupOf_; // unit -> live group holding it
     std::vector<std::uint32_t> next_;
     std::vector<Group> groups_; // 0..n-1: the units; then one per merge
@@ -440,6 +441,8 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
         throw Error(ErrorCode::InvalidArgument, "level merge options out of range");
     }
     if (units.empty()) return kNoId;
+    const MergeBvh::Simd simd =
+        options.baselineSimd ? MergeBvh::Simd::Baseline : MergeBvh::bestSimd();
     const std::size_t total = units.size() - 1;
     std::sort(units.begin(), units.end());
     double budget = 0.0;
@@ -450,7 +453,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     std::vector<std::uint32_t> scratch;
     while (units.size() > 1) {
         progress.throwIfCancelled();
-        Level level(builder, units, maxChildren, options.neighbours);
+        Level level(builder, units, maxChildren, options.neighbours, simd);
         std::vector<std::uint32_t> sample;
         for (std::size_t i : budgetSample(units.size(), options.budgetSample)) {
             sample.push_back(static_cast<std::uint32_t>(i));

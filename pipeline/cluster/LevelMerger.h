@@ -88,6 +88,9 @@ struct LevelMergeOptions {
     std::size_t neighbours = 8;     // K of rule 3, 1..255
     std::size_t rebuildRatio = 2;   // R of rule 3, >= 1 (1: rebuild at every level)
     double graphBudgetFactor = 2.0; // G of rule 3, >= 1
+    // Not a rule constant: run the spatial queries with the baseline vector width even where
+    // AVX2 code could run (MergeBvh.h; the tests compare both, the tree is the same).
+    bool baselineSimd = false;
 };
 
 // Clusters `units` (node ids of `builder`, each unit once) into one tree and returns its root

@@ -9,6 +9,15 @@
 
 namespace hlod {
 
+MergeBvh::Simd MergeBvh::bestSimd() {
+#if HLOD_WIDE_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+    return avx2 ? Simd::Avx2 : Simd::Baseline;
+#else
+    return Simd::Baseline;
+#endif
+}
+
 void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
                      const CostModel& model) {
     const auto n = static_cast<std::uint32_t>(items.size());

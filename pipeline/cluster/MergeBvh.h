@@ -8,7 +8,9 @@
 // splits per node (the longest axis of the centroids, then each half's longest axis): a
 // range of five or more items becomes four parts, a range of two to four items a node of item
 // slots. Wide nodes (as in Embree's BVH4) halve the depth and replace the branchy node-by-node
-// recursion of a binary tree by one vector test per node.
+// recursion of a binary tree by one vector test per node. The queries exist twice: for the
+// baseline target (two lanes per SSE2 vector) and compiled for AVX2 (four lanes per vector,
+// a third fewer instructions), picked at run time from what the processor has.
 // One hierarchy per size class (the caller's key, e.g. the binary exponent of the radius):
 // real scenes mix bolts and floor plates, and a node holding both can bound neither the cost
 // of joining a big part (at least its volume) nor that of a small one (low fill), so mixed
@@ -32,6 +34,13 @@
 
 #include "pipeline/cluster/WideBounds.h"
 
+// Run-time dispatch to AVX2 code (GCC and Clang on x86-64; elsewhere only the baseline).
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define HLOD_WIDE_AVX2 1
+#else
+#define HLOD_WIDE_AVX2 0
+#endif
+
 namespace hlod {
 
 class MergeBvh {
@@ -48,11 +57,19 @@ public:
     void build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
                const CostModel& model);
 
+    // The vector width the queries run with: Baseline (two lanes per vector, any x86-64 or
+    // other target) or Avx2 (four lanes, x86-64 processors that have AVX2; the functions are
+    // compiled for it separately and chosen at run time). Both give the same answers.
+    enum class Simd { Baseline, Avx2 };
+    // Avx2 when this build can dispatch to it and the processor has it.
+    static Simd bestSimd();
+
     // Cheapest-partner search for item `self`: nearest slots first, skipping every slot whose
     // lower bound exceeds `threshold`; `visit(item)` sees every other item not skipped (and
     // may see `self`) and may lower `threshold` (a reference the visitor updates).
     template <class Visit>
-    void search(std::uint32_t self, const double& threshold, Visit&& visit) const;
+    void search(std::uint32_t self, const double& threshold, Visit&& visit,
+                Simd simd = bestSimd()) const;
 
     // Self-join: calls visit(i, j) once for every unordered pair of distinct items whose
     // pair bound (and those of the slots holding them) does not exceed `threshold`.
@@ -61,7 +78,7 @@ public:
     // rest for its parts; an item finally descends what its group kept. Only slots holding
     // items after the query's first item (in the hierarchy's order) are tested, so each pair
     // is met once, from its first item.
-    template <class Visit> void join(double threshold, Visit&& visit) const;
+    template <class Visit> void join(double threshold, Visit&& visit, Simd simd = bestSimd()) const;
 
 private:
     // A target node and the lanes of it still to test.
@@ -69,16 +86,40 @@ private:
         std::uint32_t node;
         unsigned mask;
     };
-    using JoinScratch = std::vector<std::vector<Entry>>; // one list per query depth
-    static constexpr std::size_t kMaxDepth = 64;
 
+    template <int W, class Visit>
+    [[gnu::always_inline]] void searchWith(std::uint32_t self, const double& threshold,
+                                           Visit& visit) const;
+    template <int W, class Visit>
+    [[gnu::always_inline]] void joinWith(double threshold, Visit& visit) const;
+    template <int W, class Visit>
+    [[gnu::always_inline]] void joinItem(std::uint32_t p, const std::vector<Entry>& targets,
+                                         double threshold, Visit& visit) const;
+#if HLOD_WIDE_AVX2
     template <class Visit>
-    void joinGroup(const PackedRegion& region, const PackedExtra& extra, std::uint32_t q,
-                   std::uint32_t begin, const std::vector<Entry>& targets, std::size_t depth,
-                   double threshold, Visit& visit, JoinScratch& scratch) const;
+    [[gnu::target("avx2")]] void searchAvx2(std::uint32_t self, const double& threshold,
+                                            Visit& visit) const {
+        searchWith<4>(self, threshold, visit);
+    }
     template <class Visit>
-    void joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
-                  Visit& visit) const;
+    [[gnu::target("avx2")]] void joinAvx2(double threshold, Visit& visit) const {
+        joinWith<4>(threshold, visit);
+    }
+#endif
+    // Depth first from each target entry: f(entry, node, push) tests the entry's node and
+    // calls push(Entry) for what to descend into.
+    template <class F>
+    [[gnu::always_inline]] void descend(const std::vector<Entry>& targets, F&& f) const {
+        std::array<Entry, 128> stack;
+        for (const Entry& target : targets) {
+            std::size_t top = 0;
+            stack[top++] = target;
+            while (top > 0) {
+                const Entry e = stack[--top];
+                f(e, nodes_[e.node], [&](const Entry& child) { stack[top++] = child; });
+            }
+        }
+    }
     // Lanes holding an item after position p (each pair is met from its first item only).
     static unsigned laterThan(const Node& node, std::uint32_t p) {
         unsigned out = 0;
@@ -109,8 +150,8 @@ private:
         Region region;
     };
 
-    WideQuery queryOf(std::uint32_t position) const {
-        return WideQuery(*model_, packed_[position], packedExtra_[position]);
+    template <int W> [[gnu::always_inline]] WideQueryT<W> queryOf(std::uint32_t position) const {
+        return WideQueryT<W>(*model_, packed_[position], packedExtra_[position]);
     }
     Slot buildRange(std::uint32_t begin, std::uint32_t end, const std::vector<Region>& items,
                     const std::vector<glm::dvec3>& centers);
@@ -132,11 +173,34 @@ private:
 // Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
 // items, plus the item) and the tops above them add log4 of the class count (at most 6 for
 // the 2,100 binary exponents of a double), so a descent's stack (at most four slots pushed per
-// node popped) fits in 128 entries and the join's group recursion in kMaxDepth levels.
+// node popped) fits in 128 entries.
 template <class Visit>
-void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit) const {
+void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit, Simd simd) const {
+#if HLOD_WIDE_AVX2
+    if (simd == Simd::Avx2) {
+        searchAvx2(self, threshold, visit);
+        return;
+    }
+#endif
+    (void)simd;
+    searchWith<2>(self, threshold, visit);
+}
+
+template <class Visit> void MergeBvh::join(double threshold, Visit&& visit, Simd simd) const {
+#if HLOD_WIDE_AVX2
+    if (simd == Simd::Avx2) {
+        joinAvx2(threshold, visit);
+        return;
+    }
+#endif
+    (void)simd;
+    joinWith<2>(threshold, visit);
+}
+
+template <int W, class Visit>
+inline void MergeBvh::searchWith(std::uint32_t self, const double& threshold, Visit& visit) const {
     if (nodes_.empty()) return;
-    const WideQuery q = queryOf(position_[self]);
+    const WideQueryT<W> q = queryOf<W>(position_[self]);
     struct Pending {
         std::uint32_t node;
         double lb;
@@ -175,80 +239,79 @@ void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit
     }
 }
 
-template <class Visit> void MergeBvh::join(double threshold, Visit&& visit) const {
+template <int W, class Visit> inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
     if (nodes_.empty()) return;
-    JoinScratch scratch(kMaxDepth);
-    const std::vector<Entry> all{Entry{root_, 0xfu}};
-    joinGroup(rootRegion_, rootExtra_, root_, 0, all, 0, threshold, visit, scratch);
-}
-
-template <class Visit>
-void MergeBvh::joinGroup(const PackedRegion& region, const PackedExtra& extra, std::uint32_t q,
-                         std::uint32_t begin, const std::vector<Entry>& targets, std::size_t depth,
-                         double threshold, Visit& visit, JoinScratch& scratch) const {
-    const WideQuery query(*model_, region, extra);
-    const double size = diagonal2(region);
-    // The targets' lanes this group may still pair with; a node lane at least as large as the
-    // group is opened here, a smaller one is left for the group's parts to test.
-    std::vector<Entry>& kept = scratch[depth];
-    kept.clear();
-    std::array<Entry, 128> stack;
-    for (const Entry& target : targets) {
-        std::size_t top = 0;
-        stack[top++] = target;
-        while (top > 0) {
-            const Entry e = stack[--top];
-            const Node& node = nodes_[e.node];
+    // The query groups depth first, without recursion (so the whole join is one function,
+    // compiled for the chosen vector width). A frame is a query node, its region being lane
+    // `lane` of node `parent` (the root's for the first frame); a frame of depth d tests the
+    // target lanes kept at depth d - 1 and keeps its own at depth d. Siblings are popped
+    // after the whole subtree of the one before, which writes only deeper lists.
+    struct Frame {
+        std::uint32_t q;
+        std::uint32_t begin; // first item position below q
+        std::uint32_t depth;
+        std::uint32_t parent;
+        int lane;
+    };
+    constexpr std::uint32_t kNoParent = 0xffffffffu;
+    std::vector<std::vector<Entry>> kept(2);
+    kept[0].push_back(Entry{root_, 0xfu});
+    std::vector<Frame> frames{Frame{root_, 0, 1, kNoParent, 0}};
+    while (!frames.empty()) {
+        const Frame f = frames.back();
+        frames.pop_back();
+        PackedRegion region = rootRegion_;
+        PackedExtra extra = rootExtra_;
+        if (f.parent != kNoParent) getLane(nodes_[f.parent].slots, f.lane, region, extra);
+        const WideQueryT<W> query(*model_, region, extra);
+        const double size = diagonal2(region);
+        if (kept.size() <= f.depth) kept.resize(f.depth + 1);
+        const std::vector<Entry>& targets = kept[f.depth - 1];
+        // The targets' lanes this group may still pair with; a node lane at least as large as
+        // the group is opened here, a smaller one is left for the group's parts to test.
+        std::vector<Entry>& out = kept[f.depth];
+        out.clear();
+        descend(targets, [&](const Entry& e, const Node& node, auto&& push) {
             const unsigned keep =
-                e.mask & laterThan(node, begin) & ~query.exceeds(node.slots, threshold);
+                e.mask & laterThan(node, f.begin) & ~query.exceeds(node.slots, threshold);
             unsigned open = 0;
             for (unsigned m = keep; m != 0; m &= m - 1) {
                 const int l = __builtin_ctz(m);
                 if ((node.child[l] & kItem) == 0 && laneDiagonal2(node.slots, l) > size) {
                     open |= 1u << l;
-                    stack[top++] = Entry{node.child[l], 0xfu};
+                    push(Entry{node.child[l], 0xfu});
                 }
             }
-            if ((keep & ~open) != 0) kept.push_back(Entry{e.node, keep & ~open});
+            if ((keep & ~open) != 0) out.push_back(Entry{e.node, keep & ~open});
+        });
+        const Node& group = nodes_[f.q];
+        for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
+            const std::uint32_t c = group.child[l];
+            if ((c & kItem) != 0) joinItem<W>(c & ~kItem, out, threshold, visit);
         }
-    }
-    const Node& group = nodes_[q];
-    for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
-        const std::uint32_t c = group.child[l];
-        if ((c & kItem) != 0) {
-            joinItem(c & ~kItem, kept, threshold, visit);
-            continue;
+        for (int l = 3; l >= 0; --l) {
+            const std::uint32_t c = group.child[l];
+            if (group.end[l] == 0 || (c & kItem) != 0) continue;
+            frames.push_back(Frame{c, l == 0 ? f.begin : group.end[l - 1], f.depth + 1, f.q, l});
         }
-        PackedRegion r{};
-        PackedExtra e{};
-        getLane(group.slots, l, r, e);
-        joinGroup(r, e, c, l == 0 ? begin : group.end[l - 1], kept, depth + 1, threshold, visit,
-                  scratch);
     }
 }
 
-template <class Visit>
-void MergeBvh::joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
-                        Visit& visit) const {
-    const WideQuery query = queryOf(p);
-    std::array<Entry, 128> stack;
-    for (const Entry& target : targets) {
-        std::size_t top = 0;
-        stack[top++] = target;
-        while (top > 0) {
-            const Entry e = stack[--top];
-            const Node& node = nodes_[e.node];
-            unsigned keep = e.mask & laterThan(node, p) & ~query.exceeds(node.slots, threshold);
-            for (; keep != 0; keep &= keep - 1) {
-                const std::uint32_t c = node.child[__builtin_ctz(keep)];
-                if ((c & kItem) != 0) {
-                    visit(order_[p], order_[c & ~kItem]);
-                } else {
-                    stack[top++] = Entry{c, 0xfu};
-                }
+template <int W, class Visit>
+inline void MergeBvh::joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
+                               Visit& visit) const {
+    const WideQueryT<W> query = queryOf<W>(p);
+    descend(targets, [&](const Entry& e, const Node& node, auto&& push) {
+        unsigned keep = e.mask & laterThan(node, p) & ~query.exceeds(node.slots, threshold);
+        for (; keep != 0; keep &= keep - 1) {
+            const std::uint32_t c = node.child[__builtin_ctz(keep)];
+            if ((c & kItem) != 0) {
+                visit(order_[p], order_[c & ~kItem]);
+            } else {
+                push(Entry{c, 0xfu});
             }
         }
-    }
+    });
 }
 
 } // namespace hlod

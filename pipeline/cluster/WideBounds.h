@@ -1,8 +1,9 @@
 // The cost bounds of CostBounds.h for four regions at once: one query region (an item of a
 // clustering level, packed) against the four slots of a wide BVH node (MergeBvh.h), in double
-// precision over GCC/Clang vector types: two lanes at a time, one SSE2 register on baseline
-// x86-64 (or NEON), so every operation is one instruction (a four-double vector would be
-// split into scalar code without AVX).
+// precision over GCC/Clang vector types, W lanes at a time: W = 2 is one SSE2 (or NEON)
+// register, the baseline; W = 4 is one AVX register, for code compiled for AVX2 (MergeBvh.h
+// picks it at run time when the processor has it; in a function compiled for the baseline a
+// four-double vector would be split into scalar code).
 //
 // The arithmetic is PackedPairTest's (CostBounds.h), term for term and in the same order, lane
 // by lane: a lane exceeds exactly when PackedPairTest::exceeds(query, slot) would, and a lane's
@@ -63,41 +64,52 @@ inline void getLane(const WideRegions& w, int lane, PackedRegion& r, PackedExtra
 
 namespace wide {
 
-// Two lanes at a time: one SSE2 (or NEON) register. (Four lanes in one AVX register measured
-// about 3 % faster overall, not worth a second code path with run-time dispatch.)
-using Vd = double __attribute__((vector_size(16)));
-using Vm = long long __attribute__((vector_size(16)));
-constexpr int kLanes = 2;
-[[gnu::always_inline]] inline Vd load(const float* p) {
+template <int W> struct Lanes;
+template <> struct Lanes<2> {
+    using Vd = double __attribute__((vector_size(16)));
+    using Vm = long long __attribute__((vector_size(16))); // a comparison's lanes: all ones or 0
+    [[gnu::always_inline]] static Vd load(const float* p) {
 #if defined(__SSE2__)
-    // One 8-byte load and one cvtps2pd (the generic form below compiles to two scalar loads
-    // and conversions).
-    return reinterpret_cast<Vd>(
-        _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)))));
+        // One 8-byte load and one cvtps2pd (the generic form compiles to two scalar loads and
+        // conversions).
+        return reinterpret_cast<Vd>(
+            _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p)))));
 #else
-    using V2f = float __attribute__((vector_size(8)));
-    V2f f;
-    std::memcpy(&f, p, sizeof f);
-    return __builtin_convertvector(f, Vd);
+        using Vf = float __attribute__((vector_size(8)));
+        Vf f;
+        std::memcpy(&f, p, sizeof f);
+        return __builtin_convertvector(f, Vd);
 #endif
-}
-[[gnu::always_inline]] inline Vd splat(double x) { return Vd{x, x}; }
-[[gnu::always_inline]] inline Vd vmax(Vd a, Vd b) { return a > b ? a : b; }
-[[gnu::always_inline]] inline Vd vmin(Vd a, Vd b) { return a < b ? a : b; }
-// Bit l set when lane l of `m` is set.
-[[gnu::always_inline]] inline unsigned bits(Vm m) {
-    unsigned out = 0;
-    for (int l = 0; l < kLanes; ++l)
-        out |= m[l] != 0 ? 1u << l : 0u;
-    return out;
-}
+    }
+    [[gnu::always_inline]] static Vd splat(double x) { return Vd{x, x}; }
+};
+template <> struct Lanes<4> {
+    using Vd = double __attribute__((vector_size(32)));
+    using Vm = long long __attribute__((vector_size(32)));
+    [[gnu::always_inline]] static Vd load(const float* p) {
+        using Vf = float __attribute__((vector_size(16)));
+        Vf f;
+        std::memcpy(&f, p, sizeof f);
+        return __builtin_convertvector(f, Vd);
+    }
+    [[gnu::always_inline]] static Vd splat(double x) { return Vd{x, x, x, x}; }
+};
+
+template <class V> [[gnu::always_inline]] inline V vmax(V a, V b) { return a > b ? a : b; }
+template <class V> [[gnu::always_inline]] inline V vmin(V a, V b) { return a < b ? a : b; }
 
 } // namespace wide
 
-// One query region against wide nodes, for one cost model (sphere, or box with its k).
-class WideQuery {
+// One query region against wide nodes, for one cost model (sphere, or box with its k), W lanes
+// per vector (2 or 4, see the header). Every member is inlined into its caller, so the
+// caller's target decides the instructions.
+template <int W> class WideQueryT {
+    using L = wide::Lanes<W>;
+    using Vd = typename L::Vd;
+    using Vm = typename L::Vm;
+
 public:
-    WideQuery(const CostModel& model, const PackedRegion& r, const PackedExtra& e)
+    WideQueryT(const CostModel& model, const PackedRegion& r, const PackedExtra& e)
         : k_(model.k()), sphere_(model.volume() == VolumeType::Sphere) {
         for (int i = 0; i < 3; ++i) {
             lo_[i] = r.lo[i];
@@ -112,15 +124,15 @@ public:
     // Bit l set when lane l's pair bound exceeds `threshold` (PackedPairTest::exceeds).
     [[gnu::always_inline]] unsigned exceeds(const WideRegions& w, double threshold) const {
         unsigned out = 0;
-        for (int at = 0; at < 4; at += wide::kLanes)
-            out |= exceedsHalf(w, at, threshold) << at;
+        for (int at = 0; at < 4; at += W)
+            out |= exceedsPart(w, at, threshold) << at;
         return out;
     }
 
     // Lane l: pairLowerBound(query, slot l) (CostBounds.h), for ordering a search.
-    void bounds(const WideRegions& w, double out[4]) const {
-        for (int at = 0; at < 4; at += wide::kLanes)
-            boundsHalf(w, at, out + at);
+    [[gnu::always_inline]] void bounds(const WideRegions& w, double out[4]) const {
+        for (int at = 0; at < 4; at += W)
+            boundsPart(w, at, out + at);
     }
 
 private:
@@ -128,16 +140,26 @@ private:
     static constexpr double kSphereVolume = 4.0 / 3.0 * 3.14159265358979323846;
 
     struct Terms {
-        wide::Vd fvSum;
-        wide::Vd lhs; // the volume bound times fvSum, safety applied
-        wide::Vd e[3];
-        wide::Vd v;
+        Vd fvSum;
+        Vd lhs; // the volume bound times fvSum, safety applied
+        Vd e[3];
+        Vd v;
     };
 
-    // Lanes at..at+1 of exceeds(), as bits 0 and 1.
-    [[gnu::always_inline]] unsigned exceedsHalf(const WideRegions& w, int at,
+    [[gnu::always_inline]] static Vd load(const float* p) { return L::load(p); }
+    [[gnu::always_inline]] static Vd splat(double x) { return L::splat(x); }
+    [[gnu::always_inline]] static unsigned bits(Vm m) {
+        unsigned out = 0;
+        for (int l = 0; l < W; ++l)
+            out |= m[l] != 0 ? 1u << l : 0u;
+        return out;
+    }
+
+    // Lanes at..at+W-1 of exceeds(), as bits 0..W-1.
+    [[gnu::always_inline]] unsigned exceedsPart(const WideRegions& w, int at,
                                                 double threshold) const {
-        using namespace wide;
+        using wide::vmax;
+        using wide::vmin;
         const Terms t = terms(w, at);
         const Vd rhs = splat(threshold) * t.fvSum;
         Vm out = t.lhs > rhs;
@@ -155,7 +177,7 @@ private:
             return bits(out);
         }
         unsigned result = bits(out);
-        for (int l = 0; l < wide::kLanes; ++l) {
+        for (int l = 0; l < W; ++l) {
             const glm::dvec3 e(t.e[0][l], t.e[1][l], t.e[2][l]);
             if (shapeVolumeBound(k_, e, t.v[l], t.fvSum[l]) * kSafety > threshold) {
                 result |= 1u << l;
@@ -169,22 +191,22 @@ private:
         return result;
     }
 
-    void boundsHalf(const WideRegions& w, int at, double out[2]) const {
-        using namespace wide;
+    [[gnu::always_inline]] void boundsPart(const WideRegions& w, int at, double* out) const {
+        using wide::vmax;
         const Terms t = terms(w, at);
         Vd bound = t.lhs / t.fvSum;
         if (!sphere_ && k_ != 0.0) {
             const Vd hi = vmax(t.e[0], vmax(t.e[1], t.e[2]));
             const Vd minUb = this->minUb(w, at);
             const Vd ratio = vmax(minUb, hi) / minUb;
-            for (int l = 0; l < wide::kLanes; ++l) {
+            for (int l = 0; l < W; ++l) {
                 const glm::dvec3 e(t.e[0][l], t.e[1][l], t.e[2][l]);
                 double b = bound[l] * powK(ratio[l]);
                 b = std::max(b, shapeVolumeBound(k_, e, t.v[l], t.fvSum[l]) * kSafety);
                 bound[l] = b;
             }
         }
-        for (int l = 0; l < wide::kLanes; ++l)
+        for (int l = 0; l < W; ++l)
             out[l] = bound[l];
     }
 
@@ -195,7 +217,7 @@ private:
     }
 
     [[gnu::always_inline]] Terms terms(const WideRegions& w, int at) const {
-        using namespace wide;
+        using wide::vmax;
         Terms t;
         t.fvSum = splat(maxFv_) + load(w.maxFv + at);
         Vd gap[3];
@@ -207,7 +229,7 @@ private:
             const Vd gx = vmax(gap[0], zero), gy = vmax(gap[1], zero), gz = vmax(gap[2], zero);
             const Vd d2 = gx * gx + gy * gy + gz * gz;
             Vd d = d2;
-            for (int l = 0; l < wide::kLanes; ++l)
+            for (int l = 0; l < W; ++l)
                 d[l] = std::sqrt(d2[l]);
             const Vd ra = splat(minSize_), rb = load(w.minSize + at);
             const Vd r = vmax(vmax(ra, rb), (d + ra + rb) * splat(0.5));
@@ -229,9 +251,10 @@ private:
         return t;
     }
 
-    // Smallest extent of the hull of the query and each of two slots.
-    [[gnu::always_inline]] wide::Vd minUb(const WideRegions& w, int at) const {
-        using namespace wide;
+    // Smallest extent of the hull of the query and each of W slots.
+    [[gnu::always_inline]] Vd minUb(const WideRegions& w, int at) const {
+        using wide::vmax;
+        using wide::vmin;
         Vd out = splat(std::numeric_limits<double>::max());
         for (int i = 0; i < 3; ++i) {
             out = vmin(out, vmax(splat(hi_[i]), load(w.hi[i] + at)) -

@@ -86,13 +86,15 @@ TEST(ClusterProperty, FastEqualsNaiveForOtherRuleConstants) {
     // Budget samples smaller than the unit count (production uses 256, near the sizes the
     // naive reference can handle), short or long neighbour lists, graphs rebuilt at every level
     // or inherited until the budget or the fallback forces a rebuild (R = 1000), with graph
-    // budgets from B to 8 B.
+    // budgets from B to 8 B; and the production constants on the baseline vector width (the
+    // other runs use AVX2 where the processor has it).
     const Scene scene = test::makeRandomScene({250, test::Layout::Clumped, 12, 0.05});
     for (const Model& model : kModels) {
         for (const LevelMergeOptions options :
              {LevelMergeOptions{1, 8, 2, 1.0}, LevelMergeOptions{7, 1, 1, 1.0},
               LevelMergeOptions{64, 3, 4, 8.0}, LevelMergeOptions{1000, 40, 1, 2.0},
-              LevelMergeOptions{256, 2, 1000, 1.0}, LevelMergeOptions{256, 8, 1000, 4.0}}) {
+              LevelMergeOptions{256, 2, 1000, 1.0}, LevelMergeOptions{256, 8, 1000, 4.0},
+              LevelMergeOptions{256, 8, 2, 2.0, true}}) {
             ClusterParams p;
             p.volume = model.volume;
             p.k = model.k;
@@ -108,7 +110,8 @@ TEST(ClusterProperty, FastEqualsNaiveForOtherRuleConstants) {
                 });
             EXPECT_EQ(test::treeDifference(fast, reference), "")
                 << "S " << options.budgetSample << " K " << options.neighbours << " R "
-                << options.rebuildRatio << " G " << options.graphBudgetFactor;
+                << options.rebuildRatio << " G " << options.graphBudgetFactor
+                << (options.baselineSimd ? " baseline" : "");
             EXPECT_EQ(validateClusterTree(fast, scene.instances.size()), "");
         }
     }

@@ -1,7 +1,8 @@
 // The 4-wide BVH of level merging (pipeline/cluster/MergeBvh.h) and its vector bounds
-// (pipeline/cluster/WideBounds.h): each lane answers as the scalar packed test does, the
-// self-join reports every pair within the threshold once and nothing its item test rejects,
-// and the search finds the cheapest partner.
+// (pipeline/cluster/WideBounds.h): each lane answers as the scalar packed test does (two or
+// four lanes per vector), the self-join reports every pair within the threshold once and
+// nothing its item test rejects, and the search finds the cheapest partner, with the baseline
+// code and, where the processor has it, the AVX2 code.
 #include <algorithm>
 #include <random>
 #include <set>
@@ -41,6 +42,15 @@ std::vector<ClusterUnit> randomUnits(const CostModel& m, std::size_t n, double s
     }
     return out;
 }
+
+// The vector widths this machine can run: the baseline always, AVX2 where the processor has it.
+std::vector<MergeBvh::Simd> simds() {
+    std::vector<MergeBvh::Simd> out{MergeBvh::Simd::Baseline};
+    if (MergeBvh::bestSimd() == MergeBvh::Simd::Avx2) out.push_back(MergeBvh::Simd::Avx2);
+    return out;
+}
+
+const char* nameOf(MergeBvh::Simd s) { return s == MergeBvh::Simd::Avx2 ? "avx2" : "baseline"; }
 
 MergeBvh buildOver(const CostModel& m, const std::vector<ClusterUnit>& units) {
     std::vector<Region> regions;
@@ -89,20 +99,25 @@ TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
                 EXPECT_EQ(back.maxFv, sr[l].maxFv);
                 EXPECT_EQ(back.lo[2], sr[l].lo[2]);
             }
-            const WideQuery query(m, qr, qe);
+            const WideQueryT<2> query(m, qr, qe);
+            const WideQueryT<4> query4(m, qr, qe);
             double bounds[4];
+            double bounds4[4];
             query.bounds(w, bounds);
+            query4.bounds(w, bounds4);
             const PackedRef q{&qr, boxModel ? &qe : nullptr};
             for (int l = 0; l < 4; ++l) {
                 const PackedRef s{&sr[l], boxModel ? &se[l] : nullptr};
                 const double scalar = pairLowerBound(m, q, s);
                 EXPECT_NEAR(bounds[l], scalar, 1e-12 * scalar);
+                EXPECT_EQ(bounds4[l], bounds[l]);
                 // Thresholds around the bound, where the verdict flips.
                 for (double f : {0.5, 0.999999, 1.000001, 2.0, 1e3 * unit(rng)}) {
                     const double t = scalar * f;
                     const bool lane = (query.exceeds(w, t) >> l & 1u) != 0;
                     EXPECT_EQ(lane, PackedPairTest(m, t).exceeds(q, s))
                         << toString(model.volume) << " k=" << model.k << " lane " << l;
+                    EXPECT_EQ((query4.exceeds(w, t) >> l & 1u) != 0, lane);
                 }
             }
         }
@@ -125,10 +140,20 @@ TEST(MergeBvh, JoinReportsEveryPairWithinTheThresholdOnce) {
             std::sort(costs.begin(), costs.end());
             const double threshold = costs.empty() ? 1.0 : costs[costs.size() / 20];
             std::multiset<std::pair<std::uint32_t, std::uint32_t>> seen;
-            bvh.join(threshold, [&](std::uint32_t i, std::uint32_t j) {
-                EXPECT_NE(i, j);
-                seen.emplace(std::min(i, j), std::max(i, j));
-            });
+            for (MergeBvh::Simd simd : simds()) {
+                std::multiset<std::pair<std::uint32_t, std::uint32_t>> pairs;
+                bvh.join(
+                    threshold,
+                    [&](std::uint32_t i, std::uint32_t j) {
+                        EXPECT_NE(i, j);
+                        pairs.emplace(std::min(i, j), std::max(i, j));
+                    },
+                    simd);
+                if (simd != MergeBvh::Simd::Baseline) {
+                    EXPECT_EQ(pairs, seen) << "the " << nameOf(simd) << " join differs";
+                }
+                seen = std::move(pairs);
+            }
             const PackedPairTest test(m, threshold);
             std::size_t within = 0;
             for (std::uint32_t i = 0; i < n; ++i) {
@@ -164,18 +189,24 @@ TEST(MergeBvh, SearchFindsTheCheapestPartner) {
         const std::vector<ClusterUnit> units = randomUnits(m, 500, 60.0, 77);
         const MergeBvh bvh = buildOver(m, units);
         for (std::uint32_t u = 0; u < units.size(); u += 7) {
-            double best = std::numeric_limits<double>::infinity();
-            std::size_t visited = 0;
-            bvh.search(u, best, [&](std::uint32_t v) {
-                ++visited;
-                if (v != u) best = std::min(best, cost(m, units, u, v));
-            });
             double expected = std::numeric_limits<double>::infinity();
             for (std::uint32_t v = 0; v < units.size(); ++v) {
                 if (v != u) expected = std::min(expected, cost(m, units, u, v));
             }
-            EXPECT_EQ(best, expected) << toString(model.volume) << " k=" << model.k;
-            EXPECT_LT(visited, units.size()) << "the search visited everything";
+            for (MergeBvh::Simd simd : simds()) {
+                double best = std::numeric_limits<double>::infinity();
+                std::size_t visited = 0;
+                bvh.search(
+                    u, best,
+                    [&](std::uint32_t v) {
+                        ++visited;
+                        if (v != u) best = std::min(best, cost(m, units, u, v));
+                    },
+                    simd);
+                EXPECT_EQ(best, expected)
+                    << toString(model.volume) << " k=" << model.k << " " << nameOf(simd);
+                EXPECT_LT(visited, units.size()) << "the search visited everything";
+            }
         }
     }
 }
