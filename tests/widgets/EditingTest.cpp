@@ -146,10 +146,7 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     ProjectSession session;
     Document& doc = session.document();
     StudioModel model;
-    model.setDocument(&doc);
-    ASSERT_TRUE(test::useTestBakeParameters(session));
-    model.setScene(sample.scene);
-    model.setBuilt(sample);
+    ASSERT_TRUE(test::showSampleBuild(session, model));
     ClusterTreeModel treeModel;
     QTreeView tree;
     tree.setModel(&treeModel);

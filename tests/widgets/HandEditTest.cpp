@@ -47,12 +47,8 @@ class HandEdit : public ::testing::Test {
 protected:
     void SetUp() override {
         const BuiltHlod& sample = test::sampleBuild();
-        Document& doc = session.document();
         // The sample build's parameters (TestBuilds.h), so an unedited rebuild is the same tree.
-        ASSERT_TRUE(test::useTestBakeParameters(session));
-        model.setDocument(&doc);
-        model.setScene(sample.scene);
-        model.setBuilt(sample);
+        ASSERT_TRUE(test::showSampleBuild(session, model));
         tree.setModel(&treeModel);
         treeModel.setBuild(sample.scene, sample.build);
         QObject::connect(&model, &StudioModel::buildFinished, &treeModel,

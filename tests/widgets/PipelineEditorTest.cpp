@@ -26,13 +26,9 @@ namespace {
 class PipelineDock : public ::testing::Test {
 protected:
     void SetUp() override {
-        const BuiltHlod& sample = test::sampleBuild();
-        Document& doc = session.document();
         // The sample build's parameters (TestBuilds.h): the shown build is up to date.
-        ASSERT_TRUE(test::useTestBakeParameters(session));
-        model.setDocument(&doc);
-        model.setScene(sample.scene);
-        model.setBuilt(sample);
+        ASSERT_TRUE(test::showSampleBuild(session, model));
+        Document& doc = session.document();
         QObject::connect(&session, &ProjectSession::documentChanged, &model,
                          &StudioModel::syncSettings);
         params.setNodes(doc.clusterNode(), doc.bakeNode());

@@ -61,6 +61,15 @@ bool useTestBakeParameters(ProjectSession& session) {
            session.undo()->execute(std::make_unique<SetParameter>(bake, "threads", 2));
 }
 
+bool showSampleBuild(ProjectSession& session, StudioModel& model) {
+    const BuiltHlod& sample = sampleBuild();
+    if (!useTestBakeParameters(session)) return false;
+    model.setDocument(&session.document());
+    model.setScene(sample.scene);
+    model.setBuilt(sample);
+    return true;
+}
+
 bool waitForBuild(StudioModel& model) {
     QSignalSpy finished(&model, &StudioModel::buildFinished);
     if (!model.building()) {

@@ -32,6 +32,11 @@ const BuiltHlod& sampleBuild();
 // undoable commands, so an unedited rebuild of the sample gives sampleBuild()'s tree.
 bool useTestBakeParameters(ProjectSession& session);
 
+// The editor as it stands after opening the sample: the document's bake parameters set as
+// useTestBakeParameters does, and `model` showing that document, the sample scene and
+// sampleBuild(). False when a parameter could not be set.
+bool showSampleBuild(ProjectSession& session, StudioModel& model);
+
 // Waits for the next build of `model` to start (AutoRebuild's timer) and finish; true when it
 // finished within two minutes.
 bool waitForBuild(StudioModel& model);
