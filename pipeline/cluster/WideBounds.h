@@ -196,21 +196,26 @@ private:
             const Vd hi = vmax(t.e[0], vmax(t.e[1], t.e[2]));
             const Vd minUb = this->minUb(w, at);
             const Vd ratio = vmax(minUb, hi) / minUb;
-            for (int l = 0; l < W; ++l) {
-                const glm::dvec3 e(t.e[0][l], t.e[1][l], t.e[2][l]);
-                double b = bound[l] * powK(ratio[l]);
-                b = std::max(b, shapeVolumeBound(k_, e, t.v[l], t.fvSum[l]) * kSafety);
-                bound[l] = b;
+            if (k_ == 1.0 || k_ == 2.0) {
+                // shapeVolumeBound (CostBounds.h) in the lanes, the same operations in order.
+                using wide::vmin;
+                const Vd mid = vmax(vmin(t.e[0], t.e[1]), vmin(vmax(t.e[0], t.e[1]), t.e[2]));
+                const Vd p = hi * hi * mid;
+                const Vd coupled =
+                    k_ == 1.0 ? p * vmax(splat(1.0), t.v / t.fvSum) : p * p / t.fvSum;
+                const Vd separate = k_ == 1.0 ? bound * ratio : bound * (ratio * ratio);
+                bound = vmax(separate, coupled * splat(kSafety));
+            } else {
+                for (int l = 0; l < W; ++l) {
+                    const glm::dvec3 e(t.e[0][l], t.e[1][l], t.e[2][l]);
+                    double b = bound[l] * std::pow(ratio[l], k_);
+                    b = std::max(b, shapeVolumeBound(k_, e, t.v[l], t.fvSum[l]) * kSafety);
+                    bound[l] = b;
+                }
             }
         }
         for (int l = 0; l < W; ++l)
             out[l] = bound[l];
-    }
-
-    double powK(double ratio) const {
-        if (k_ == 1.0) return ratio;
-        if (k_ == 2.0) return ratio * ratio;
-        return std::pow(ratio, k_);
     }
 
     [[gnu::always_inline]] Terms terms(const WideRegions& w, int at) const {
