@@ -57,20 +57,6 @@ void packRegion(const Region& r, bool boxModel, PackedRegion& out, PackedExtra& 
     }
 }
 
-Region unpackRegion(PackedRef g) {
-    Region r;
-    r.box = Aabb{lowCorner(g), highCorner(g)};
-    r.maxFv = maxFvOf(g);
-    // The minima the model does not read stay 0 (a valid lower bound of anything).
-    r.minRadius = g.e == nullptr ? minRadiusOf(g) : 0.0;
-    r.minVolume = g.e != nullptr ? minVolumeOf(g) : 0.0;
-    if (g.e != nullptr) {
-        r.minExtent = minExtentOf(g);
-        r.minArea = minAreaOf(g);
-    }
-    return r;
-}
-
 Region regionOf(const CostModel& model, const ClusterUnit& u) {
     Region r;
     if (model.volume() == VolumeType::Aabb) {

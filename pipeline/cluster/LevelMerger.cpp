@@ -113,7 +113,6 @@ public:
           k_(neighbours), simd_(simd) {
         const std::size_t n = units.size();
         positionOf_ = spatialOrder(builder, units);
-        const std::vector<std::uint32_t>& order = positionOf_;
         units_.resize(n);
         internalOf_.resize(n);
         groupOf_.resize(n);
@@ -122,8 +121,8 @@ public:
         std::vector<Region> regions(n);
         std::vector<int> classes(n);
         for (std::uint32_t i = 0; i < n; ++i) {
-            units_[i] = units[order[i]];
-            internalOf_[order[i]] = i;
+            units_[i] = units[positionOf_[i]];
+            internalOf_[positionOf_[i]] = i;
             Group& g = groups_[i];
             g.unit = builder.unit(units_[i]);
             g.key = units_[i];
@@ -197,11 +196,11 @@ public:
         graph_.start.assign(n + 1, 0);
         graph_.adj.resize(graph.adj.size());
         for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t p = positionOf(i);
+            const std::uint32_t p = positionOf_[i];
             graph_.start[i + 1] = graph_.start[i] + (graph.start[p + 1] - graph.start[p]);
         }
         for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t p = positionOf(i);
+            const std::uint32_t p = positionOf_[i];
             std::uint32_t at = graph_.start[i];
             for (std::uint32_t e = graph.start[p]; e < graph.start[p + 1]; ++e)
                 graph_.adj[at++] = internalOf_[graph.adj[e]];
@@ -392,8 +391,6 @@ private:
             groupOf_[i] = id;
         return id;
     }
-
-    std::uint32_t positionOf(std::uint32_t i) const { return positionOf_[i]; }
 
     TreeBuilder& builder_;
     const CostModel& model_;

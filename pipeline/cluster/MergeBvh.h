@@ -29,7 +29,6 @@
 
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "pipeline/cluster/WideBounds.h"

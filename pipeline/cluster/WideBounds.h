@@ -5,14 +5,15 @@
 // picks it at run time when the processor has it; in a function compiled for the baseline a
 // four-double vector would be split into scalar code).
 //
-// The arithmetic is PackedPairTest's (CostBounds.h), term for term and in the same order, lane
-// by lane: a lane exceeds exactly when PackedPairTest::exceeds(query, slot) would, and a lane's
-// bound is pairLowerBound(query, slot) up to the rounding of one multiplication (both carry the
-// 1 - 1e-9 safety factor, far above it). What differs is only that there is no early exit: every
-// term is computed for the four lanes and the verdicts are or-ed, which is the same verdict
-// (the scalar test returns true at the first term that exceeds, false when none does). So every
-// argument of CostBounds.h carries over: a lane that exceeds holds no pair within the
-// threshold. The tests check the lanes against the scalar test (MergeBvhTest).
+// The arithmetic is that of the scalar pair test the tests keep (PackedPairTest in
+// tests/pipeline/cluster/ScalarBounds.h), term for term and in the same order, lane by lane: a
+// lane exceeds exactly when the scalar test would, and a lane's bound is the scalar
+// pairLowerBound up to the rounding of one multiplication (both carry the 1 - 1e-9 safety
+// factor, far above it). What differs is only that there is no early exit: every term is
+// computed for the four lanes and the verdicts are or-ed, which is the same verdict (the scalar
+// test returns true at the first term that exceeds, false when none does). So every argument
+// of CostBounds.h carries over: a lane that exceeds holds no pair within the threshold. The
+// tests check the lanes against the scalar test (MergeBvhTest).
 #pragma once
 
 #include <cmath>
@@ -118,7 +119,7 @@ public:
         minSize_ = r.minSize;
     }
 
-    // Bit l set when lane l's pair bound exceeds `threshold` (PackedPairTest::exceeds).
+    // Bit l set when lane l's pair bound exceeds `threshold`.
     [[gnu::always_inline]] unsigned exceeds(const WideRegions& w, double threshold) const {
         unsigned out = 0;
         for (int at = 0; at < 4; at += W)
@@ -126,7 +127,8 @@ public:
         return out;
     }
 
-    // Lane l: pairLowerBound(query, slot l) (CostBounds.h), for ordering a search.
+    // Lane l: a lower bound of the cost of the query with anything in slot l, for ordering a
+    // search.
     [[gnu::always_inline]] void bounds(const WideRegions& w, double out[4]) const {
         for (int at = 0; at < 4; at += W)
             boundsPart(w, at, out + at);

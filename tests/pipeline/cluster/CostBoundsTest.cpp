@@ -7,6 +7,8 @@
 
 #include "pipeline/cluster/CostBounds.h"
 
+#include "ScalarBounds.h"
+
 namespace hlod {
 namespace {
 

@@ -9,6 +9,8 @@
 #include "pipeline/cluster/CostBounds.h"
 #include "pipeline/core/Error.h"
 
+#include "ScalarBounds.h"
+
 namespace hlod {
 namespace {
 

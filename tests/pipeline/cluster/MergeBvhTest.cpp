@@ -13,6 +13,8 @@
 
 #include "pipeline/cluster/MergeBvh.h"
 
+#include "ScalarBounds.h"
+
 namespace hlod {
 namespace {
 
