@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <queue>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -69,17 +68,20 @@ std::uint64_t spreadBits(std::uint64_t x) {
     return x;
 }
 
-// Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres, ties by position.
-std::vector<std::uint32_t> spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units) {
+// Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres, ties by position,
+// into `order` (`keyed`: scratch).
+void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
+                  std::vector<std::uint32_t>& order,
+                  std::vector<std::pair<std::uint64_t, std::uint32_t>>& keyed) {
     const std::size_t n = units.size();
     const bool box = builder.model().volume() == VolumeType::Aabb;
-    std::vector<glm::dvec3> centres(n);
-    Aabb all;
-    for (std::size_t i = 0; i < n; ++i) {
+    auto centre = [&](std::size_t i) {
         const ClusterUnit& u = builder.unit(units[i]);
-        centres[i] = box ? u.box.center() : u.sphere.center;
-        all.expand(centres[i]);
-    }
+        return box ? u.box.center() : u.sphere.center;
+    };
+    Aabb all;
+    for (std::size_t i = 0; i < n; ++i)
+        all.expand(centre(i));
     constexpr double kCells = double((1u << 21) - 1);
     const glm::dvec3 extent = glm::max(all.max - all.min, glm::dvec3(1e-300));
     const glm::dvec3 scale = glm::dvec3(kCells) / extent;
@@ -87,53 +89,67 @@ std::vector<std::uint32_t> spatialOrder(const TreeBuilder& builder, const std::v
     auto cell = [&](double x) -> std::uint64_t {
         return x >= 0.0 ? static_cast<std::uint64_t>(std::min(x, kCells)) : 0u;
     };
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+    keyed.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const glm::dvec3 q = (centres[i] - all.min) * scale;
+        const glm::dvec3 q = (centre(i) - all.min) * scale;
         const std::uint64_t code =
             spreadBits(cell(q.x)) | spreadBits(cell(q.y)) << 1 | spreadBits(cell(q.z)) << 2;
         keyed[i] = {code, i};
     }
     std::sort(keyed.begin(), keyed.end());
-    std::vector<std::uint32_t> order(n);
+    order.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         order[i] = keyed[i].second;
-    return order;
 }
+
+// What the next level needs to inherit this level's graph (rule step 3, the contracted
+// graph): the graph over this level's units, the members of each next unit and the next
+// position of each unit. Kept rather than contracted at once, since most levels rebuild.
+struct Contraction {
+    Graph graph;                            // rows: this level's internal indices
+    std::vector<std::uint32_t> memberStart; // next position -> range of `members`
+    std::vector<std::uint32_t> members;     // internal indices of this level
+    std::vector<std::uint32_t> nextOf;      // internal index -> next position
+};
 
 class Level {
 public:
-    // `units` in ascending id. Internally the units are numbered in space-filling-curve order
-    // of their centres (spatialOrder), so the groups, lists and graph rows that one unit's
-    // neighbours touch lie close together in memory; the rule only ever compares ids, so the
-    // numbering changes no result.
-    Level(TreeBuilder& builder, const std::vector<Id>& units, int maxChildren,
-          std::size_t neighbours, MergeBvh::Simd simd)
+    // One object serves every level (start() begins one), so that its buffers are reused
+    // instead of allocated and faulted in level after level.
+    Level(TreeBuilder& builder, int maxChildren, std::size_t neighbours, MergeBvh::Simd simd)
         : builder_(builder), model_(builder.model()), cap_(static_cast<std::uint32_t>(maxChildren)),
-          k_(neighbours), simd_(simd) {
+          k_(neighbours), simd_(simd) {}
+
+    // Begins a level over `units` (ascending id). Internally the units are numbered in
+    // space-filling-curve order of their centres (spatialOrder), so the groups, lists and
+    // graph rows that one unit's neighbours touch lie close together in memory; the rule only
+    // ever compares ids, so the numbering changes no result.
+    void start(const std::vector<Id>& units) {
         const std::size_t n = units.size();
-        positionOf_ = spatialOrder(builder, units);
+        spatialOrder(builder_, units, positionOf_, keyed_);
         units_.resize(n);
         internalOf_.resize(n);
         groupOf_.resize(n);
         next_.assign(n, kNone);
         groups_.resize(n);
-        std::vector<Region> regions(n);
-        std::vector<int> classes(n);
+        regions_.resize(n);
+        classes_.resize(n);
         for (std::uint32_t i = 0; i < n; ++i) {
             units_[i] = units[positionOf_[i]];
             internalOf_[positionOf_[i]] = i;
             Group& g = groups_[i];
-            g.unit = builder.unit(units_[i]);
+            g.unit = builder_.unit(units_[i]);
             g.key = units_[i];
             g.head = g.tail = i;
             g.size = 1;
+            g.alive = true;
             groupOf_[i] = i;
-            regions[i] = regionOf(model_, g.unit);
-            classes[i] = sizeClass(model_, g.unit);
+            regions_[i] = regionOf(model_, g.unit);
+            classes_[i] = sizeClass(model_, g.unit);
         }
-        bvh_.build(regions, classes, model_);
+        bvh_.build(regions_, classes_, model_);
         seen_.assign(n, 0);
+        stamp_ = 0;
     }
 
     // Cheapest partner cost of each unit in `which` (positions in ascending id), in parallel.
@@ -177,7 +193,8 @@ public:
         for (std::size_t u = 0; u < n; ++u)
             g.start[u + 1] += g.start[u];
         g.adj.resize(g.start[n]);
-        std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
+        std::vector<std::uint32_t>& fill = scratch_;
+        fill.assign(g.start.begin(), g.start.end() - 1);
         for (std::uint32_t u = 0; u < n; ++u) {
             for (std::size_t k = 0; k < listSize_[u]; ++k) {
                 const std::uint32_t v = lists_[u * k_ + k].unit;
@@ -185,43 +202,47 @@ public:
                 g.adj[fill[v]++] = u;
             }
         }
-        lists_.clear();
-        lists_.shrink_to_fit();
     }
 
-    // Rule step 3, inherited: the previous level's graph contracted by its groups (rows and
-    // entries are positions in ascending id, renumbered here).
-    void setGraph(const Graph& graph) {
+    // Rule step 3, inherited: the previous level's graph contracted by its groups (two units
+    // are neighbours when a member of one neighboured a member of the other), in this level's
+    // numbering.
+    void setGraph(const Contraction& c) {
         const std::size_t n = units_.size();
-        graph_.start.assign(n + 1, 0);
-        graph_.adj.resize(graph.adj.size());
+        graph_.start.assign(1, 0);
+        graph_.adj.clear();
+        std::vector<std::uint32_t>& mark = scratch_;
+        mark.assign(n, kNone);
         for (std::uint32_t i = 0; i < n; ++i) {
             const std::uint32_t p = positionOf_[i];
-            graph_.start[i + 1] = graph_.start[i] + (graph.start[p + 1] - graph.start[p]);
-        }
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const std::uint32_t p = positionOf_[i];
-            std::uint32_t at = graph_.start[i];
-            for (std::uint32_t e = graph.start[p]; e < graph.start[p + 1]; ++e)
-                graph_.adj[at++] = internalOf_[graph.adj[e]];
+            for (std::uint32_t k = c.memberStart[p]; k < c.memberStart[p + 1]; ++k) {
+                const std::uint32_t m = c.members[k];
+                for (std::uint32_t e = c.graph.start[m]; e < c.graph.start[m + 1]; ++e) {
+                    const std::uint32_t q = c.nextOf[c.graph.adj[e]];
+                    if (q == p || mark[q] == i) continue;
+                    mark[q] = i;
+                    graph_.adj.push_back(internalOf_[q]);
+                }
+            }
+            graph_.start.push_back(static_cast<std::uint32_t>(graph_.adj.size()));
         }
     }
 
     // Rule step 4: cheapest adjacent pair first until none is within budget and cap.
     std::size_t run(double budget, const Progress& progress) {
-        std::vector<Candidate> initial;
-        initial.reserve(units_.size());
+        std::vector<Candidate>& heap = heap_;
+        heap.clear();
         for (std::uint32_t g = 0; g < units_.size(); ++g) {
             const Candidate c = cheapestNeighbour(g, budget);
-            if (c.partner != kNone) initial.push_back(c);
+            if (c.partner != kNone) heap.push_back(c);
         }
         // Heapified at once (linear); pops follow the total key order whatever the layout.
-        std::priority_queue<Candidate, std::vector<Candidate>, LaterFirst> heap(LaterFirst{},
-                                                                                std::move(initial));
+        std::make_heap(heap.begin(), heap.end(), LaterFirst{});
         std::size_t merges = 0;
         while (!heap.empty()) {
-            const Candidate top = heap.top();
-            heap.pop();
+            std::pop_heap(heap.begin(), heap.end(), LaterFirst{});
+            const Candidate top = heap.back();
+            heap.pop_back();
             if (!groups_[top.group].alive) continue;
             // A live entry whose partner also lives is exact and, being the smallest lower
             // bound, the global minimum. One whose partner merged is replaced.
@@ -231,23 +252,28 @@ public:
                 if (++merges % 4096 == 0) progress.throwIfCancelled();
             }
             const Candidate c = cheapestNeighbour(g, budget);
-            if (c.partner != kNone) heap.push(c);
+            if (c.partner != kNone) {
+                heap.push_back(c);
+                std::push_heap(heap.begin(), heap.end(), LaterFirst{});
+            }
         }
         return merges;
     }
 
     // Rule step 5: the next level's units in ascending id (carried singletons and new nodes,
-    // which take ids in ascending key order) and the graph contracted by this level's groups:
-    // two next units are neighbours when a member of one neighboured a member of the other.
-    std::vector<Id> finish(Graph& contracted, std::vector<std::uint32_t>& scratch) {
-        std::vector<std::uint32_t> formed;
+    // which take ids in ascending key order), and in `inherit` what the next level needs to
+    // contract this level's graph by its groups (setGraph).
+    std::vector<Id> finish(Contraction& inherit) {
+        std::vector<std::uint32_t>& formed = scratch_;
+        formed.clear();
         for (std::uint32_t g = 0; g < groups_.size(); ++g) {
             if (groups_[g].alive && groups_[g].size > 1) formed.push_back(g);
         }
         std::sort(formed.begin(), formed.end(), [&](std::uint32_t a, std::uint32_t b) {
             return groups_[a].key < groups_[b].key;
         });
-        std::vector<Id> nodeOf(groups_.size(), kNoId); // live group -> its next-level node
+        std::vector<Id>& nodeOf = nodeOf_; // live group -> its next-level node
+        nodeOf.assign(groups_.size(), kNoId);
         for (std::uint32_t g : formed) {
             std::vector<Id> children;
             children.reserve(groups_[g].size);
@@ -256,31 +282,25 @@ public:
             }
             nodeOf[g] = builder_.addNode(std::move(children), groups_[g].unit);
         }
-        std::vector<std::pair<Id, std::uint32_t>> next; // (node id, group)
+        std::vector<std::pair<Id, std::uint32_t>>& next = nextUnits_; // (node id, group)
+        next.clear();
         for (std::uint32_t g = 0; g < groups_.size(); ++g) {
             if (!groups_[g].alive) continue;
             if (groups_[g].size == 1) nodeOf[g] = units_[groups_[g].head];
             next.emplace_back(nodeOf[g], g);
         }
         std::sort(next.begin(), next.end());
-        // Position of each live group in the next level.
-        scratch.assign(groups_.size(), kNone);
-        for (std::uint32_t p = 0; p < next.size(); ++p)
-            scratch[next[p].second] = p;
-        contracted.start.assign(1, 0);
-        contracted.adj.clear();
-        std::vector<std::uint32_t> mark(next.size(), kNone);
+        inherit.graph.start.swap(graph_.start);
+        inherit.graph.adj.swap(graph_.adj);
+        inherit.memberStart.assign(1, 0);
+        inherit.members.clear();
+        inherit.nextOf.resize(units_.size());
         for (std::uint32_t p = 0; p < next.size(); ++p) {
-            const Group& G = groups_[next[p].second];
-            for (std::uint32_t m = G.head; m != kNone; m = next_[m]) {
-                for (std::uint32_t e = graph_.start[m]; e < graph_.start[m + 1]; ++e) {
-                    const std::uint32_t q = scratch[groupOf_[graph_.adj[e]]];
-                    if (q == p || mark[q] == p) continue;
-                    mark[q] = p;
-                    contracted.adj.push_back(q);
-                }
+            for (std::uint32_t m = groups_[next[p].second].head; m != kNone; m = next_[m]) {
+                inherit.members.push_back(m);
+                inherit.nextOf[m] = p;
             }
-            contracted.start.push_back(static_cast<std::uint32_t>(contracted.adj.size()));
+            inherit.memberStart.push_back(static_cast<std::uint32_t>(inherit.members.size()));
         }
         std::vector<Id> units(next.size());
         for (std::size_t p = 0; p < next.size(); ++p)
@@ -410,6 +430,14 @@ private:
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
     std::vector<std::uint32_t> candidates_; // cheapestNeighbour's scratch
+    // Buffers kept from level to level (their contents are per call).
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_;
+    std::vector<Region> regions_;
+    std::vector<int> classes_;
+    std::vector<Candidate> heap_;
+    std::vector<Id> nodeOf_;
+    std::vector<std::pair<Id, std::uint32_t>> nextUnits_;
+    std::vector<std::uint32_t> scratch_;
 };
 
 double lowerMedian(std::vector<double> costs) {
@@ -443,14 +471,14 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     const std::size_t total = units.size() - 1;
     std::sort(units.begin(), units.end());
     double budget = 0.0;
-    Graph graph;
+    Contraction inherit;
     bool haveGraph = false;
     std::size_t unitsAtRebuild = 0;
     double graphBudget = 0.0;
-    std::vector<std::uint32_t> scratch;
+    Level level(builder, maxChildren, options.neighbours, simd);
     while (units.size() > 1) {
         progress.throwIfCancelled();
-        Level level(builder, units, maxChildren, options.neighbours, simd);
+        level.start(units);
         std::vector<std::uint32_t> sample;
         for (std::size_t i : budgetSample(units.size(), options.budgetSample)) {
             sample.push_back(static_cast<std::uint32_t>(i));
@@ -463,7 +491,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
             level.buildGraph(graphBudget);
             unitsAtRebuild = units.size();
         } else {
-            level.setGraph(graph);
+            level.setGraph(inherit);
         }
         if (level.run(budget, progress) == 0 && !rebuilt) {
             // The inherited graph has no pair within the budget: rebuild and rerun (nothing
@@ -473,7 +501,7 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
             unitsAtRebuild = units.size();
             level.run(budget, progress);
         }
-        units = level.finish(graph, scratch);
+        units = level.finish(inherit);
         haveGraph = true;
         progress.emit(ProgressInfo{"cluster", total - (units.size() - 1), total, ""});
     }

@@ -30,13 +30,11 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     packedExtra_.assign(n, PackedExtra{});
     if (n == 0) return;
     nodes_.reserve(n / 2 + 16);
-    std::vector<glm::dvec3> centers(n);
+    std::vector<glm::dvec3>& centers = centers_;
+    centers.resize(n);
     for (std::uint32_t i = 0; i < n; ++i)
         centers[i] = items[i].box.center();
-    // Items grouped by size class (stable: ties keep item order), one hierarchy per class.
-    std::iota(order_.begin(), order_.end(), 0u);
-    std::stable_sort(order_.begin(), order_.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return sizeClass[a] < sizeClass[b]; });
+    groupByClass(sizeClass);
     std::vector<Slot> tops;
     std::uint32_t begin = 0;
     while (begin < n) {
@@ -56,6 +54,30 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     }
     root_ = tops[0].child;
     packRegion(tops[0].region, boxModel, rootRegion_, rootExtra_);
+}
+
+void MergeBvh::groupByClass(const std::vector<int>& sizeClass) {
+    // Items grouped by size class, ties in item order (a stable sort by class): counting sort
+    // over the class range, which spans a few binary exponents in practice; a comparison sort
+    // of (class, item) for pathological ranges.
+    const auto n = static_cast<std::uint32_t>(sizeClass.size());
+    const auto [lo, hi] = std::minmax_element(sizeClass.begin(), sizeClass.end());
+    const std::int64_t range = std::int64_t{*hi} - *lo + 1;
+    if (range <= 4096) {
+        std::vector<std::uint32_t>& start = classStart_;
+        start.assign(static_cast<std::size_t>(range) + 1, 0);
+        for (std::uint32_t i = 0; i < n; ++i)
+            ++start[static_cast<std::size_t>(std::int64_t{sizeClass[i]} - *lo) + 1];
+        for (std::size_t c = 1; c < start.size(); ++c)
+            start[c] += start[c - 1];
+        for (std::uint32_t i = 0; i < n; ++i)
+            order_[start[static_cast<std::size_t>(std::int64_t{sizeClass[i]} - *lo)]++] = i;
+        return;
+    }
+    std::iota(order_.begin(), order_.end(), 0u);
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return sizeClass[a] < sizeClass[b] || (sizeClass[a] == sizeClass[b] && a < b);
+    });
 }
 
 std::uint32_t MergeBvh::medianSplit(std::uint32_t begin, std::uint32_t end,

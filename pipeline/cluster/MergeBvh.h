@@ -134,13 +134,12 @@ private:
         }
         return d;
     }
-    static double laneDiagonal2(const WideRegions& w, int l) {
-        double d = 0.0;
-        for (int i = 0; i < 3; ++i) {
-            const double x = static_cast<double>(w.hi[i][l]) - w.lo[i][l];
-            d += x * x;
-        }
-        return d;
+    // Lanes holding a child node (not an item, not unused).
+    static unsigned nodeLanes(const Node& node) {
+        unsigned out = 0;
+        for (int l = 0; l < 4; ++l)
+            out |= node.end[l] != 0 && (node.child[l] & kItem) == 0 ? 1u << l : 0u;
+        return out;
     }
 
     struct Slot {
@@ -157,6 +156,7 @@ private:
     Slot makeNode(const Slot* parts, std::size_t count);
     std::uint32_t medianSplit(std::uint32_t begin, std::uint32_t end,
                               const std::vector<glm::dvec3>& centers);
+    void groupByClass(const std::vector<int>& sizeClass);
 
     const CostModel* model_ = nullptr;
     std::vector<Node> nodes_;
@@ -167,6 +167,9 @@ private:
     std::vector<std::uint32_t> position_;  // item -> position
     std::vector<PackedRegion> packed_;     // by position
     std::vector<PackedExtra> packedExtra_; // by position (box model)
+    // Build scratch, kept so that rebuilding level after level reuses the memory.
+    std::vector<glm::dvec3> centers_;
+    std::vector<std::uint32_t> classStart_;
 };
 
 // Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
@@ -273,14 +276,10 @@ template <int W, class Visit> inline void MergeBvh::joinWith(double threshold, V
         descend(targets, [&](const Entry& e, const Node& node, auto&& push) {
             const unsigned keep =
                 e.mask & laterThan(node, f.begin) & ~query.exceeds(node.slots, threshold);
-            unsigned open = 0;
-            for (unsigned m = keep; m != 0; m &= m - 1) {
-                const int l = __builtin_ctz(m);
-                if ((node.child[l] & kItem) == 0 && laneDiagonal2(node.slots, l) > size) {
-                    open |= 1u << l;
-                    push(Entry{node.child[l], 0xfu});
-                }
-            }
+            unsigned open = keep & nodeLanes(node);
+            if (open != 0) open &= diagonalAbove<W>(node.slots, size);
+            for (unsigned m = open; m != 0; m &= m - 1)
+                push(Entry{node.child[__builtin_ctz(m)], 0xfu});
             if ((keep & ~open) != 0) out.push_back(Entry{e.node, keep & ~open});
         });
         const Node& group = nodes_[f.q];

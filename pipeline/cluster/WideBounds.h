@@ -83,6 +83,14 @@ template <> struct Lanes<2> {
 #endif
     }
     [[gnu::always_inline]] static Vd splat(double x) { return Vd{x, x}; }
+    // Bit l set when lane l of a comparison is true.
+    [[gnu::always_inline]] static unsigned bits(Vm m) {
+#if defined(__SSE2__)
+        return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(m)));
+#else
+        return static_cast<unsigned>((m[0] & 1) | (m[1] & 2));
+#endif
+    }
 };
 template <> struct Lanes<4> {
     using Vd = double __attribute__((vector_size(32)));
@@ -91,12 +99,43 @@ template <> struct Lanes<4> {
     // (__builtin_convertvector there converts two halves through the stack).
     [[gnu::always_inline]] static Vd load(const float* p) { return Vd{p[0], p[1], p[2], p[3]}; }
     [[gnu::always_inline]] static Vd splat(double x) { return Vd{x, x, x, x}; }
+    // Two SSE2 sign-mask moves (AVX's own is not callable from this generic code; inlined
+    // into AVX2 code these are two vmovmskpd). Lane by lane the compiler stored the vector
+    // and branched on each lane.
+    [[gnu::always_inline]] static unsigned bits(Vm m) {
+#if defined(__SSE2__)
+        using V2 = long long __attribute__((vector_size(16)));
+        const V2 lo = __builtin_shufflevector(m, m, 0, 1);
+        const V2 hi = __builtin_shufflevector(m, m, 2, 3);
+        return static_cast<unsigned>(_mm_movemask_pd(reinterpret_cast<__m128d>(lo)) |
+                                     _mm_movemask_pd(reinterpret_cast<__m128d>(hi)) << 2);
+#else
+        return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+    }
 };
 
 template <class V> [[gnu::always_inline]] inline V vmax(V a, V b) { return a > b ? a : b; }
 template <class V> [[gnu::always_inline]] inline V vmin(V a, V b) { return a < b ? a : b; }
 
 } // namespace wide
+
+// Bit l set when the box of lane l has a squared diagonal above `size2` (W lanes per vector).
+template <int W>
+[[gnu::always_inline]] inline unsigned diagonalAbove(const WideRegions& w, double size2) {
+    using L = wide::Lanes<W>;
+    unsigned out = 0;
+    for (int at = 0; at < 4; at += W) {
+        typename L::Vd d2 = L::splat(0.0);
+#pragma GCC unroll 3
+        for (int i = 0; i < 3; ++i) {
+            const typename L::Vd x = L::load(w.hi[i] + at) - L::load(w.lo[i] + at);
+            d2 += x * x;
+        }
+        out |= L::bits(d2 > L::splat(size2)) << at;
+    }
+    return out;
+}
 
 // One query region against wide nodes, for one cost model (sphere, or box with its k), W lanes
 // per vector (2 or 4, see the header). Every member is inlined into its caller, so the
@@ -147,12 +186,7 @@ private:
 
     [[gnu::always_inline]] static Vd load(const float* p) { return L::load(p); }
     [[gnu::always_inline]] static Vd splat(double x) { return L::splat(x); }
-    [[gnu::always_inline]] static unsigned bits(Vm m) {
-        unsigned out = 0;
-        for (int l = 0; l < W; ++l)
-            out |= m[l] != 0 ? 1u << l : 0u;
-        return out;
-    }
+    [[gnu::always_inline]] static unsigned bits(Vm m) { return L::bits(m); }
 
     // Lanes at..at+W-1 of exceeds(), as bits 0..W-1.
     [[gnu::always_inline]] unsigned exceedsPart(const WideRegions& w, int at,
@@ -225,6 +259,7 @@ private:
         Terms t;
         t.fvSum = splat(maxFv_) + load(w.maxFv + at);
         Vd gap[3];
+#pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
             gap[i] = vmax(load(w.lo[i] + at) - splat(hi_[i]), splat(lo_[i]) - load(w.hi[i] + at));
         }
@@ -242,6 +277,7 @@ private:
             return t;
         }
         Vd area[3];
+#pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
             const Vd wa = splat(minExtent_[i]), wb = load(w.minExtent[i] + at);
             t.e[i] = vmax(vmax(wa, wb), gap[i] + (wa + wb));
@@ -260,6 +296,7 @@ private:
         using wide::vmax;
         using wide::vmin;
         Vd out = splat(std::numeric_limits<double>::max());
+#pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
             out = vmin(out, vmax(splat(hi_[i]), load(w.hi[i] + at)) -
                                 vmin(splat(lo_[i]), load(w.lo[i] + at)));
