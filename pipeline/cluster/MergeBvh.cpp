@@ -88,13 +88,16 @@ std::uint32_t MergeBvh::medianSplit(std::uint32_t begin, std::uint32_t end,
     const glm::dvec3 e = centerBox.extent();
     const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
     const std::uint32_t mid = begin + (end - begin) / 2;
-    // Ties broken by item index so the shape is a pure function of the input.
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                         const double ca = centers[a][axis];
-                         const double cb = centers[b][axis];
-                         return ca < cb || (ca == cb && a < b);
-                     });
+    // Ties broken by item index so the shape is a pure function of the input. The keys are
+    // gathered once, so the selection compares contiguous pairs instead of loading two
+    // scattered centres per comparison.
+    std::vector<std::pair<double, std::uint32_t>>& keyed = splitKeys_;
+    keyed.resize(end - begin);
+    for (std::uint32_t i = begin; i < end; ++i)
+        keyed[i - begin] = {centers[order_[i]][axis], order_[i]};
+    std::nth_element(keyed.begin(), keyed.begin() + (mid - begin), keyed.end());
+    for (std::uint32_t i = begin; i < end; ++i)
+        order_[i] = keyed[i - begin].second;
     return mid;
 }
 
