@@ -103,13 +103,11 @@ void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
 }
 
 // What the next level needs to inherit this level's graph (rule step 3, the contracted
-// graph): the graph over this level's units, the members of each next unit and the next
-// position of each unit. Kept rather than contracted at once, since most levels rebuild.
+// graph): the graph over this level's units and the next position of each unit (the group
+// holding it). Kept rather than contracted at once, since most levels rebuild.
 struct Contraction {
-    Graph graph;                            // rows: this level's internal indices
-    std::vector<std::uint32_t> memberStart; // next position -> range of `members`
-    std::vector<std::uint32_t> members;     // internal indices of this level
-    std::vector<std::uint32_t> nextOf;      // internal index -> next position
+    Graph graph;                       // rows: this level's internal indices
+    std::vector<std::uint32_t> nextOf; // internal index -> next position
 };
 
 class Level {
@@ -137,8 +135,13 @@ public:
         for (std::uint32_t i = 0; i < n; ++i) {
             units_[i] = units[positionOf_[i]];
             internalOf_[positionOf_[i]] = i;
+        }
+        // The builder's units read in ascending id (in memory order) and scattered: the
+        // writes do not wait on each other as scattered reads would.
+        for (std::uint32_t p = 0; p < n; ++p)
+            groups_[internalOf_[p]].unit = builder_.unit(units[p]);
+        for (std::uint32_t i = 0; i < n; ++i) {
             Group& g = groups_[i];
-            g.unit = builder_.unit(units_[i]);
             g.key = units_[i];
             g.head = g.tail = i;
             g.size = 1;
@@ -209,14 +212,29 @@ public:
     // numbering.
     void setGraph(const Contraction& c) {
         const std::size_t n = units_.size();
+        // The previous level's units by next position (counting sort: ascending within one).
+        std::vector<std::uint32_t>& memberStart = scratch_;
+        memberStart.assign(n + 1, 0);
+        for (const std::uint32_t p : c.nextOf)
+            ++memberStart[p + 1];
+        for (std::size_t p = 0; p < n; ++p)
+            memberStart[p + 1] += memberStart[p];
+        std::vector<std::uint32_t>& members = members_;
+        members.resize(c.nextOf.size());
+        {
+            std::vector<std::uint32_t>& fill = mark_;
+            fill.assign(memberStart.begin(), memberStart.end() - 1);
+            for (std::uint32_t m = 0; m < c.nextOf.size(); ++m)
+                members[fill[c.nextOf[m]]++] = m;
+        }
         graph_.start.assign(1, 0);
         graph_.adj.clear();
-        std::vector<std::uint32_t>& mark = scratch_;
+        std::vector<std::uint32_t>& mark = mark_;
         mark.assign(n, kNone);
         for (std::uint32_t i = 0; i < n; ++i) {
             const std::uint32_t p = positionOf_[i];
-            for (std::uint32_t k = c.memberStart[p]; k < c.memberStart[p + 1]; ++k) {
-                const std::uint32_t m = c.members[k];
+            for (std::uint32_t k = memberStart[p]; k < memberStart[p + 1]; ++k) {
+                const std::uint32_t m = members[k];
                 for (std::uint32_t e = c.graph.start[m]; e < c.graph.start[m + 1]; ++e) {
                     const std::uint32_t q = c.nextOf[c.graph.adj[e]];
                     if (q == p || mark[q] == i) continue;
@@ -292,16 +310,13 @@ public:
         std::sort(next.begin(), next.end());
         inherit.graph.start.swap(graph_.start);
         inherit.graph.adj.swap(graph_.adj);
-        inherit.memberStart.assign(1, 0);
-        inherit.members.clear();
+        std::vector<std::uint32_t>& positionOfGroup = scratch_;
+        positionOfGroup.resize(groups_.size());
+        for (std::uint32_t p = 0; p < next.size(); ++p)
+            positionOfGroup[next[p].second] = p;
         inherit.nextOf.resize(units_.size());
-        for (std::uint32_t p = 0; p < next.size(); ++p) {
-            for (std::uint32_t m = groups_[next[p].second].head; m != kNone; m = next_[m]) {
-                inherit.members.push_back(m);
-                inherit.nextOf[m] = p;
-            }
-            inherit.memberStart.push_back(static_cast<std::uint32_t>(inherit.members.size()));
-        }
+        for (std::uint32_t m = 0; m < units_.size(); ++m)
+            inherit.nextOf[m] = positionOfGroup[groupOf_[m]];
         std::vector<Id> units(next.size());
         for (std::size_t p = 0; p < next.size(); ++p)
             units[p] = next[p].first;
@@ -438,6 +453,8 @@ private:
     std::vector<Id> nodeOf_;
     std::vector<std::pair<Id, std::uint32_t>> nextUnits_;
     std::vector<std::uint32_t> scratch_;
+    std::vector<std::uint32_t> members_;
+    std::vector<std::uint32_t> mark_;
 };
 
 double lowerMedian(std::vector<double> costs) {
