@@ -110,6 +110,11 @@ struct Contraction {
     std::vector<std::uint32_t> nextOf; // internal index -> next position
 };
 
+template <class T> void release(std::vector<T>& v) {
+    v.clear();
+    v.shrink_to_fit();
+}
+
 class Level {
 public:
     // One object serves every level (start() begins one), so that its buffers are reused
@@ -151,6 +156,11 @@ public:
             classes_[i] = sizeClass(model_, g.unit);
         }
         bvh_.build(regions_, classes_, model_);
+        // The regions and Morton keys are only needed for the build: released, so that the
+        // level's peak memory stays what it was (re-faulting them costs far less than the
+        // rest of a level).
+        release(regions_);
+        release(keyed_);
         seen_.assign(n, 0);
         stamp_ = 0;
     }
@@ -205,6 +215,7 @@ public:
                 g.adj[fill[v]++] = u;
             }
         }
+        release(lists_);
     }
 
     // Rule step 3, inherited: the previous level's graph contracted by its groups (two units
