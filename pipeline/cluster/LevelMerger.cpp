@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -117,7 +118,7 @@ template <class T> void release(std::vector<T>& v) {
 
 class Level {
 public:
-    // One object serves every level (start() begins one), so that its buffers are reused
+    // One object serves several levels (start() begins one), so that its buffers are reused
     // instead of allocated and faulted in level after level.
     Level(TreeBuilder& builder, int maxChildren, std::size_t neighbours, MergeBvh::Simd simd)
         : builder_(builder), model_(builder.model()), cap_(static_cast<std::uint32_t>(maxChildren)),
@@ -503,9 +504,18 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     bool haveGraph = false;
     std::size_t unitsAtRebuild = 0;
     double graphBudget = 0.0;
-    Level level(builder, maxChildren, options.neighbours, simd);
+    // One Level serves the levels until the unit count halves; then a fresh one, so that the
+    // buffers kept for reuse never hold more than twice what the current level needs.
+    std::optional<Level> current;
+    std::size_t levelCapacity = 0;
     while (units.size() > 1) {
         progress.throwIfCancelled();
+        if (!current || units.size() * 2 < levelCapacity) {
+            current.reset();
+            current.emplace(builder, maxChildren, options.neighbours, simd);
+            levelCapacity = units.size();
+        }
+        Level& level = *current;
         level.start(units);
         std::vector<std::uint32_t> sample;
         for (std::size_t i : budgetSample(units.size(), options.budgetSample)) {
