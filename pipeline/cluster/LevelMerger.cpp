@@ -156,6 +156,7 @@ public:
             regions_[i] = regionOf(model_, g.unit);
             classes_[i] = sizeClass(model_, g.unit);
         }
+        listsValid_ = false;
         bvh_.build(regions_, classes_, model_);
         // The regions and Morton keys are only needed for the build: released, so that the
         // level's peak memory stays what it was (re-faulting them costs far less than the
@@ -216,7 +217,7 @@ public:
                 g.adj[fill[v]++] = u;
             }
         }
-        release(lists_);
+        listsValid_ = true;
     }
 
     // Rule step 3, inherited: the previous level's graph contracted by its groups (two units
@@ -262,9 +263,26 @@ public:
     std::size_t run(double budget, const Progress& progress) {
         std::vector<Candidate>& heap = heap_;
         heap.clear();
-        for (std::uint32_t g = 0; g < units_.size(); ++g) {
-            const Candidate c = cheapestNeighbour(g, budget);
-            if (c.partner != kNone) heap.push_back(c);
+        if (listsValid_) {
+            // Just after a rebuild every group is one unit, and a unit's cheapest neighbour
+            // heads its own list: a neighbour that is not in the list (it listed the unit)
+            // comes after every listed pair, or the list holds all of the unit's pairs within
+            // the graph budget. The list's cost is the one cheapestNeighbour would compute.
+            for (std::uint32_t g = 0; g < units_.size(); ++g) {
+                if (listSize_[g] == 0) continue;
+                const Near& first = lists_[g * k_];
+                if (first.cost > budget) continue;
+                const bool gLow = units_[g] < units_[first.unit];
+                heap.push_back(Candidate{first.cost, gLow ? units_[g] : units_[first.unit],
+                                         gLow ? units_[first.unit] : units_[g], g, first.unit});
+            }
+            release(lists_);
+            listsValid_ = false;
+        } else {
+            for (std::uint32_t g = 0; g < units_.size(); ++g) {
+                const Candidate c = cheapestNeighbour(g, budget);
+                if (c.partner != kNone) heap.push_back(c);
+            }
         }
         // Heapified at once (linear); pops follow the total key order whatever the layout.
         std::make_heap(heap.begin(), heap.end(), LaterFirst{});
@@ -453,6 +471,7 @@ private:
     MergeBvh bvh_;
     std::vector<Near> lists_; // K per unit while the graph is built
     std::vector<std::uint8_t> listSize_;
+    bool listsValid_ = false; // lists_ hold this level's lists and no group has merged yet
     Graph graph_; // neighbour graph over the units
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
