@@ -3,7 +3,7 @@
 
 #include <algorithm>
 #include <limits>
-#include <optional>
+#include <memory>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -312,44 +312,40 @@ public:
     // which take ids in ascending key order), and in `inherit` what the next level needs to
     // contract this level's graph by its groups (setGraph).
     std::vector<Id> finish(Contraction& inherit) {
-        std::vector<std::uint32_t>& formed = scratch_;
+        // Walking the units in ascending id meets every group first at its key (its smallest
+        // member id): carried units come out in ascending id and formed groups in ascending
+        // key, with no sort. New nodes take ids above every existing one, so the next level's
+        // units, in ascending id, are the carried units followed by the new nodes.
+        const auto n = static_cast<std::uint32_t>(units_.size());
+        std::vector<std::uint32_t>& positionOfGroup = scratch_;
+        positionOfGroup.resize(groups_.size());
+        std::vector<Id> units;
+        std::vector<std::uint32_t>& formed = members_;
         formed.clear();
-        for (std::uint32_t g = 0; g < groups_.size(); ++g) {
-            if (groups_[g].alive && groups_[g].size > 1) formed.push_back(g);
+        for (std::uint32_t p = 0; p < n; ++p) {
+            const std::uint32_t i = internalOf_[p];
+            const std::uint32_t g = groupOf_[i];
+            if (groups_[g].size == 1) {
+                positionOfGroup[g] = static_cast<std::uint32_t>(units.size());
+                units.push_back(units_[i]);
+            } else if (groups_[g].key == units_[i]) {
+                formed.push_back(g);
+            }
         }
-        std::sort(formed.begin(), formed.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return groups_[a].key < groups_[b].key;
-        });
-        std::vector<Id>& nodeOf = nodeOf_; // live group -> its next-level node
-        nodeOf.assign(groups_.size(), kNoId);
-        for (std::uint32_t g : formed) {
+        for (const std::uint32_t g : formed) {
             std::vector<Id> children;
             children.reserve(groups_[g].size);
             for (std::uint32_t i = groups_[g].head; i != kNone; i = next_[i]) {
                 children.push_back(units_[i]);
             }
-            nodeOf[g] = builder_.addNode(std::move(children), groups_[g].unit);
+            positionOfGroup[g] = static_cast<std::uint32_t>(units.size());
+            units.push_back(builder_.addNode(std::move(children), groups_[g].unit));
         }
-        std::vector<std::pair<Id, std::uint32_t>>& next = nextUnits_; // (node id, group)
-        next.clear();
-        for (std::uint32_t g = 0; g < groups_.size(); ++g) {
-            if (!groups_[g].alive) continue;
-            if (groups_[g].size == 1) nodeOf[g] = units_[groups_[g].head];
-            next.emplace_back(nodeOf[g], g);
-        }
-        std::sort(next.begin(), next.end());
         inherit.graph.start.swap(graph_.start);
         inherit.graph.adj.swap(graph_.adj);
-        std::vector<std::uint32_t>& positionOfGroup = scratch_;
-        positionOfGroup.resize(groups_.size());
-        for (std::uint32_t p = 0; p < next.size(); ++p)
-            positionOfGroup[next[p].second] = p;
-        inherit.nextOf.resize(units_.size());
-        for (std::uint32_t m = 0; m < units_.size(); ++m)
+        inherit.nextOf.resize(n);
+        for (std::uint32_t m = 0; m < n; ++m)
             inherit.nextOf[m] = positionOfGroup[groupOf_[m]];
-        std::vector<Id> units(next.size());
-        for (std::size_t p = 0; p < next.size(); ++p)
-            units[p] = next[p].first;
         return units;
     }
 
@@ -481,8 +477,6 @@ private:
     std::vector<Region> regions_;
     std::vector<int> classes_;
     std::vector<Candidate> heap_;
-    std::vector<Id> nodeOf_;
-    std::vector<std::pair<Id, std::uint32_t>> nextUnits_;
     std::vector<std::uint32_t> scratch_;
     std::vector<std::uint32_t> members_;
     std::vector<std::uint32_t> mark_;
@@ -525,13 +519,13 @@ Id mergeLevelsWith(TreeBuilder& builder, std::vector<Id> units, int maxChildren,
     double graphBudget = 0.0;
     // One Level serves the levels until the unit count halves; then a fresh one, so that the
     // buffers kept for reuse never hold more than twice what the current level needs.
-    std::optional<Level> current;
+    std::unique_ptr<Level> current;
     std::size_t levelCapacity = 0;
     while (units.size() > 1) {
         progress.throwIfCancelled();
         if (!current || units.size() * 2 < levelCapacity) {
             current.reset();
-            current.emplace(builder, maxChildren, options.neighbours, simd);
+            current = std::make_unique<Level>(builder, maxChildren, options.neighbours, simd);
             levelCapacity = units.size();
         }
         Level& level = *current;
