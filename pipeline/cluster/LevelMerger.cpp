@@ -468,7 +468,7 @@ private:
     std::vector<Near> lists_; // K per unit while the graph is built
     std::vector<std::uint8_t> listSize_;
     bool listsValid_ = false; // lists_ hold this level's lists and no group has merged yet
-    Graph graph_; // neighbour graph over the units
+    Graph graph_;             // neighbour graph over the units
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
     std::vector<std::uint32_t> candidates_; // cheapestNeighbour's scratch

@@ -60,19 +60,21 @@
 // vector test, WideBounds.h); at rebuilds the neighbour lists come from one dual-tree
 // self-join pruned with the same bound (groups of units descend together, each unit finishes
 // alone). The units are numbered in Morton order of their centres inside a level, so a unit's
-// neighbours lie close in memory.
+// neighbours lie close in memory. An inherited graph is contracted only at a level that
+// inherits it (the previous level keeps its graph and each unit's next position; most levels
+// rebuild), and the level's buffers are reused until the unit count halves.
 // Merging then only touches the graph: a priority queue (heapified at once from every unit's
-// cheapest neighbour) holds each group's cheapest neighbour pair and is invalidated lazily (an
-// entry whose partner has since merged is recomputed when it reaches the top; the adjacent
-// groups are gathered and prefetched before they are costed). A popped entry whose two groups are
-// alive is the global minimum: every live qualifying pair is covered by an entry of one of its
-// groups with a key no larger than its own. Every pair cost that only has to be compared with
-// a limit (the budget, the best found so far) goes through CostModel::mergeCostWithin, which
-// stops at the cheap r^3 or V bound before the exact overlap volume. None of this changes
-// which pairs are found or their order, so the tree is the reference's (the property tests
-// compare them). Near n log n for spatially coherent scenes, memory linear in n (K edges per
-// unit). The sampled searches run in parallel (TBB), each writing its own slot, so the tree
-// does not depend on the thread count.
+// cheapest neighbour; just after a rebuild that is the head of the unit's own list) holds each
+// group's cheapest neighbour pair and is invalidated lazily (an entry whose partner has since
+// merged is recomputed when it reaches the top; the adjacent groups are gathered and prefetched
+// before they are costed). A popped entry whose two groups are alive is the global minimum: every
+// live qualifying pair is covered by an entry of one of its groups with a key no larger than its
+// own. Every pair cost that only has to be compared with a limit (the budget, the best found so
+// far) goes through CostModel::mergeCostWithin, which stops at the cheap r^3 or V bound before the
+// exact overlap volume. None of this changes which pairs are found or their order, so the tree is
+// the reference's (the property tests compare them). Near n log n for spatially coherent scenes,
+// memory linear in n (K edges per unit). The sampled searches run in parallel (TBB), each writing
+// its own slot, so the tree does not depend on the thread count.
 #pragma once
 
 #include <vector>

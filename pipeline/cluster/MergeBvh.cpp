@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <numeric>
 
 #include "pipeline/scene/Aabb.h"
@@ -88,16 +89,23 @@ std::uint32_t MergeBvh::medianSplit(std::uint32_t begin, std::uint32_t end,
     const glm::dvec3 e = centerBox.extent();
     const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
     const std::uint32_t mid = begin + (end - begin) / 2;
-    // Ties broken by item index so the shape is a pure function of the input. The keys are
-    // gathered once, so the selection compares contiguous pairs instead of loading two
-    // scattered centres per comparison.
-    std::vector<std::pair<double, std::uint32_t>>& keyed = splitKeys_;
+    // The keys are gathered once as 64-bit integers (the centre coordinate rounded to a float
+    // in the high half, mapped so that integer order is float order; the item in the low half,
+    // which breaks ties so the shape is a pure function of the input): the selection then
+    // compares contiguous integers instead of loading two scattered centres per comparison.
+    // (Rounding only decides which side of the median equal-looking centres fall: any split
+    // gives the same answers, MergeBvh.h.)
+    std::vector<std::uint64_t>& keyed = splitKeys_;
     keyed.resize(end - begin);
-    for (std::uint32_t i = begin; i < end; ++i)
-        keyed[i - begin] = {centers[order_[i]][axis], order_[i]};
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const auto bits =
+            std::bit_cast<std::uint32_t>(static_cast<float>(centers[order_[i]][axis]));
+        const std::uint32_t ordered = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
+        keyed[i - begin] = std::uint64_t{ordered} << 32 | order_[i];
+    }
     std::nth_element(keyed.begin(), keyed.begin() + (mid - begin), keyed.end());
     for (std::uint32_t i = begin; i < end; ++i)
-        order_[i] = keyed[i - begin].second;
+        order_[i] = static_cast<std::uint32_t>(keyed[i - begin]);
     return mid;
 }
 

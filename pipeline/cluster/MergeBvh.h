@@ -29,7 +29,6 @@
 
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "pipeline/cluster/WideBounds.h"
@@ -181,7 +180,7 @@ private:
     // Build scratch, kept so that rebuilding level after level reuses the memory.
     std::vector<glm::dvec3> centers_;
     std::vector<std::uint32_t> classStart_;
-    std::vector<std::pair<double, std::uint32_t>> splitKeys_;
+    std::vector<std::uint64_t> splitKeys_;
 };
 
 // Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
