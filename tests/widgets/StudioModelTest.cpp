@@ -23,6 +23,14 @@ constexpr int kBuildWaitMs = 180000;
 
 std::shared_ptr<const Scene> sample() { return std::make_shared<const Scene>(makeSampleScene()); }
 
+// Opens the tiny test scene in `model` and hands it a build of it; returns the scene.
+std::shared_ptr<const Scene> openBuiltTinyScene(StudioModel& model) {
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    model.setScene(scene);
+    model.setBuilt(test::buildNow(scene));
+    return scene;
+}
+
 TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     StudioModel model;
     model.setScene(sample());
@@ -98,9 +106,7 @@ TEST(StudioModel, BadParametersFailWithAMessageAndNoResult) {
 
 TEST(StudioModel, SelectionMapsBetweenInstancesSceneNodesAndClusters) {
     StudioModel model;
-    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
-    model.setScene(scene);
-    model.setBuilt(test::buildNow(scene));
+    openBuiltTinyScene(model);
     ASSERT_TRUE(model.hasBuild());
     const ClusterTree& tree = model.built().build->tree;
     QSignalSpy changed(&model, &StudioModel::selectionChanged);
@@ -129,9 +135,7 @@ TEST(StudioModel, SelectionMapsBetweenInstancesSceneNodesAndClusters) {
 
 TEST(StudioModel, SeveralClusterNodesSelectTheUnionOfTheirInstances) {
     StudioModel model;
-    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
-    model.setScene(scene);
-    model.setBuilt(test::buildNow(scene));
+    openBuiltTinyScene(model);
     ASSERT_TRUE(model.hasBuild());
     const ClusterTree& tree = model.built().build->tree;
     const Id leaf0 = leafOfInstance(tree, 0);
@@ -162,9 +166,7 @@ TEST(StudioModel, SeveralClusterNodesSelectTheUnionOfTheirInstances) {
 
 TEST(StudioModel, OpeningAnotherSceneDropsTheBuildAndGoesBackToOriginal) {
     StudioModel model;
-    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
-    model.setScene(scene);
-    model.setBuilt(test::buildNow(scene));
+    const auto scene = openBuiltTinyScene(model);
     model.setMode(DisplayMode::Hlod);
     model.selectInstance(0);
     model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
