@@ -42,8 +42,8 @@ struct Near {
     std::uint32_t unit;
 };
 
-// Undirected neighbour graph over a level's units (positions in the id-sorted unit list), in
-// CSR form; each edge appears in both endpoints' ranges (duplicates allowed).
+// Undirected neighbour graph over a level's units (their internal indices, Level), in CSR
+// form; each edge appears in both endpoints' ranges (duplicates allowed).
 struct Graph {
     std::vector<std::uint32_t> start{0};
     std::vector<std::uint32_t> adj;
@@ -70,10 +70,9 @@ std::uint64_t spreadBits(std::uint64_t x) {
 }
 
 // Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres, ties by position,
-// into `order` (`keyed`: scratch).
+// into `order`.
 void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
-                  std::vector<std::uint32_t>& order,
-                  std::vector<std::pair<std::uint64_t, std::uint32_t>>& keyed) {
+                  std::vector<std::uint32_t>& order) {
     const std::size_t n = units.size();
     const bool box = builder.model().volume() == VolumeType::Aabb;
     auto centre = [&](std::size_t i) {
@@ -90,7 +89,7 @@ void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
     auto cell = [&](double x) -> std::uint64_t {
         return x >= 0.0 ? static_cast<std::uint64_t>(std::min(x, kCells)) : 0u;
     };
-    keyed.resize(n);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         const glm::dvec3 q = (centre(i) - all.min) * scale;
         const std::uint64_t code =
@@ -130,14 +129,15 @@ public:
     // ever compares ids, so the numbering changes no result.
     void start(const std::vector<Id>& units) {
         const std::size_t n = units.size();
-        spatialOrder(builder_, units, positionOf_, keyed_);
+        spatialOrder(builder_, units, positionOf_);
         units_.resize(n);
         internalOf_.resize(n);
         groupOf_.resize(n);
         next_.assign(n, kNone);
         groups_.resize(n);
-        regions_.resize(n);
-        classes_.resize(n);
+        // Only the BVH build needs the regions and size classes (freed after it).
+        std::vector<Region> regions(n);
+        std::vector<int> classes(n);
         for (std::uint32_t i = 0; i < n; ++i) {
             units_[i] = units[positionOf_[i]];
             internalOf_[positionOf_[i]] = i;
@@ -153,16 +153,11 @@ public:
             g.size = 1;
             g.alive = true;
             groupOf_[i] = i;
-            regions_[i] = regionOf(model_, g.unit);
-            classes_[i] = sizeClass(model_, g.unit);
+            regions[i] = regionOf(model_, g.unit);
+            classes[i] = sizeClass(model_, g.unit);
         }
         listsValid_ = false;
-        bvh_.build(regions_, classes_, model_);
-        // The regions and Morton keys are only needed for the build: released, so that the
-        // level's peak memory stays what it was (re-faulting them costs far less than the
-        // rest of a level).
-        release(regions_);
-        release(keyed_);
+        bvh_.build(regions, classes, model_);
         seen_.assign(n, 0);
         stamp_ = 0;
     }
@@ -272,9 +267,7 @@ public:
                 if (listSize_[g] == 0) continue;
                 const Near& first = lists_[g * k_];
                 if (first.cost > budget) continue;
-                const bool gLow = units_[g] < units_[first.unit];
-                heap.push_back(Candidate{first.cost, gLow ? units_[g] : units_[first.unit],
-                                         gLow ? units_[first.unit] : units_[g], g, first.unit});
+                heap.push_back(candidate(g, first.unit, first.cost));
             }
             release(lists_);
             listsValid_ = false;
@@ -415,21 +408,22 @@ private:
         for (const std::uint32_t h : candidates_) {
             const Group& H = groups_[h];
             if (G.size + H.size > cap_) continue;
-            const bool gLow = G.key < H.key;
-            Candidate c;
             // Above best.cost (or the budget) the pair cannot win: stop at the cheap bound.
             const double limit = best.cost;
-            c.cost = gLow ? model_.mergeCostWithin(G.unit, H.unit, limit)
-                          : model_.mergeCostWithin(H.unit, G.unit, limit);
-            c.lo = gLow ? G.key : H.key;
-            c.hi = gLow ? H.key : G.key;
+            const Candidate c =
+                candidate(g, h,
+                          G.key < H.key ? model_.mergeCostWithin(G.unit, H.unit, limit)
+                                        : model_.mergeCostWithin(H.unit, G.unit, limit));
             if (c.cost > budget || (best.partner != kNone && !keyLess(c, best))) continue;
-            best.cost = c.cost;
-            best.lo = c.lo;
-            best.hi = c.hi;
-            best.partner = h;
+            best = c;
         }
         return best;
+    }
+
+    // Group g's candidate of merging with group h at `cost`, keyed by the two groups' keys.
+    Candidate candidate(std::uint32_t g, std::uint32_t h, double cost) const {
+        const Id a = groups_[g].key, b = groups_[h].key;
+        return Candidate{cost, std::min(a, b), std::max(a, b), g, h};
     }
 
     std::uint32_t merge(std::uint32_t a, std::uint32_t b) {
@@ -473,9 +467,6 @@ private:
     std::uint32_t stamp_ = 0;
     std::vector<std::uint32_t> candidates_; // cheapestNeighbour's scratch
     // Buffers kept from level to level (their contents are per call).
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed_;
-    std::vector<Region> regions_;
-    std::vector<int> classes_;
     std::vector<Candidate> heap_;
     std::vector<std::uint32_t> scratch_;
     std::vector<std::uint32_t> members_;
