@@ -23,6 +23,7 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
                      const CostModel& model) {
     const auto n = static_cast<std::uint32_t>(items.size());
     model_ = &model;
+    kind_ = boundKindOf(model);
     const bool boxModel = model.volume() == VolumeType::Aabb;
     nodes_.clear();
     order_.resize(n);

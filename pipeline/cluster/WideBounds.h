@@ -137,10 +137,26 @@ template <int W>
     return out;
 }
 
+// Which bound a query evaluates: known at compile time (one of the fixed kinds, so the
+// branches on the model fold away and only that bound's arithmetic is emitted), or Any: read
+// from the model at run time (any k; the tests use it).
+enum class BoundKind { Any, Sphere, BoxK0, BoxK1, BoxK2 };
+
+// The kind for `model`: Sphere, BoxK0/1/2 for k = 0, 1, 2, else Any.
+inline BoundKind boundKindOf(const CostModel& model) {
+    if (model.volume() == VolumeType::Sphere) return BoundKind::Sphere;
+    if (model.k() == 0.0) return BoundKind::BoxK0;
+    if (model.k() == 1.0) return BoundKind::BoxK1;
+    if (model.k() == 2.0) return BoundKind::BoxK2;
+    return BoundKind::Any;
+}
+
 // One query region against wide nodes, for one cost model (sphere, or box with its k), W lanes
 // per vector (2 or 4, see the header). Every member is inlined into its caller, so the
-// caller's target decides the instructions.
-template <int W> class WideQueryT {
+// caller's target decides the instructions. A fixed kind K must be the model's
+// (boundKindOf); Any works for every model. The query's values are kept broadcast to every
+// lane, so a node test reads them as vector operands instead of broadcasting each again.
+template <int W, BoundKind K = BoundKind::Any> class WideQueryT {
     using L = wide::Lanes<W>;
     using Vd = typename L::Vd;
     using Vm = typename L::Vm;
@@ -149,13 +165,13 @@ public:
     WideQueryT(const CostModel& model, const PackedRegion& r, const PackedExtra& e)
         : k_(model.k()), sphere_(model.volume() == VolumeType::Sphere) {
         for (int i = 0; i < 3; ++i) {
-            lo_[i] = r.lo[i];
-            hi_[i] = r.hi[i];
-            minExtent_[i] = e.minExtent[i];
-            minArea_[i] = e.minArea[i];
+            lo_[i] = splat(r.lo[i]);
+            hi_[i] = splat(r.hi[i]);
+            minExtent_[i] = splat(e.minExtent[i]);
+            minArea_[i] = splat(e.minArea[i]);
         }
-        maxFv_ = r.maxFv;
-        minSize_ = r.minSize;
+        maxFv_ = splat(r.maxFv);
+        minSize_ = splat(r.minSize);
     }
 
     // Bit l set when lane l's pair bound exceeds `threshold`.
@@ -196,16 +212,16 @@ private:
         const Terms t = terms(w, at);
         const Vd rhs = splat(threshold) * t.fvSum;
         Vm out = t.lhs > rhs;
-        if (sphere_ || k_ == 0.0) return bits(out);
+        if (sphere() || kIs(0.0)) return bits(out);
         const Vd hi = vmax(t.e[0], vmax(t.e[1], t.e[2]));
         const Vd minUb = this->minUb(w, at);
-        if (k_ == 1.0 || k_ == 2.0) {
+        if (kIs(1.0) || kIs(2.0)) {
             const Vd mid = vmax(vmin(t.e[0], t.e[1]), vmin(vmax(t.e[0], t.e[1]), t.e[2]));
             const Vd p = hi * hi * mid;
-            const Vd coupled = k_ == 1.0 ? p * vmax(t.fvSum, t.v) : p * p;
+            const Vd coupled = kIs(1.0) ? p * vmax(t.fvSum, t.v) : p * p;
             out |= coupled * splat(kSafety) > rhs;
             const Vd shape = vmax(minUb, hi);
-            out |= k_ == 1.0 ? t.lhs * shape > rhs * minUb
+            out |= kIs(1.0) ? t.lhs * shape > rhs * minUb
                              : t.lhs * (shape * shape) > rhs * (minUb * minUb);
             return bits(out);
         }
@@ -228,18 +244,18 @@ private:
         using wide::vmax;
         const Terms t = terms(w, at);
         Vd bound = t.lhs / t.fvSum;
-        if (!sphere_ && k_ != 0.0) {
+        if (!sphere() && !kIs(0.0)) {
             const Vd hi = vmax(t.e[0], vmax(t.e[1], t.e[2]));
             const Vd minUb = this->minUb(w, at);
             const Vd ratio = vmax(minUb, hi) / minUb;
-            if (k_ == 1.0 || k_ == 2.0) {
+            if (kIs(1.0) || kIs(2.0)) {
                 // shapeVolumeBound (CostBounds.h) in the lanes, the same operations in order.
                 using wide::vmin;
                 const Vd mid = vmax(vmin(t.e[0], t.e[1]), vmin(vmax(t.e[0], t.e[1]), t.e[2]));
                 const Vd p = hi * hi * mid;
                 const Vd coupled =
-                    k_ == 1.0 ? p * vmax(splat(1.0), t.v / t.fvSum) : p * p / t.fvSum;
-                const Vd separate = k_ == 1.0 ? bound * ratio : bound * (ratio * ratio);
+                    kIs(1.0) ? p * vmax(splat(1.0), t.v / t.fvSum) : p * p / t.fvSum;
+                const Vd separate = kIs(1.0) ? bound * ratio : bound * (ratio * ratio);
                 bound = vmax(separate, coupled * splat(kSafety));
             } else {
                 for (int l = 0; l < W; ++l) {
@@ -257,20 +273,20 @@ private:
     [[gnu::always_inline]] Terms terms(const WideRegions& w, int at) const {
         using wide::vmax;
         Terms t;
-        t.fvSum = splat(maxFv_) + load(w.maxFv + at);
+        t.fvSum = maxFv_ + load(w.maxFv + at);
         Vd gap[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            gap[i] = vmax(load(w.lo[i] + at) - splat(hi_[i]), splat(lo_[i]) - load(w.hi[i] + at));
+            gap[i] = vmax(load(w.lo[i] + at) - hi_[i], lo_[i] - load(w.hi[i] + at));
         }
-        if (sphere_) {
+        if (sphere()) {
             const Vd zero = splat(0.0);
             const Vd gx = vmax(gap[0], zero), gy = vmax(gap[1], zero), gz = vmax(gap[2], zero);
             const Vd d2 = gx * gx + gy * gy + gz * gz;
             Vd d = d2;
             for (int l = 0; l < W; ++l)
                 d[l] = std::sqrt(d2[l]);
-            const Vd ra = splat(minSize_), rb = load(w.minSize + at);
+            const Vd ra = minSize_, rb = load(w.minSize + at);
             const Vd r = vmax(vmax(ra, rb), (d + ra + rb) * splat(0.5));
             const Vd r3 = r * r * r;
             t.lhs = r3 * vmax(t.fvSum, splat(kSphereVolume) * r3) * splat(kSafety);
@@ -279,14 +295,14 @@ private:
         Vd area[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            const Vd wa = splat(minExtent_[i]), wb = load(w.minExtent[i] + at);
+            const Vd wa = minExtent_[i], wb = load(w.minExtent[i] + at);
             t.e[i] = vmax(vmax(wa, wb), gap[i] + (wa + wb));
-            area[i] = vmax(splat(minArea_[i]), load(w.minArea[i] + at));
+            area[i] = vmax(minArea_[i], load(w.minArea[i] + at));
         }
         const Vd vx = t.e[0] * vmax(area[0], t.e[1] * t.e[2]);
         const Vd vy = t.e[1] * vmax(area[1], t.e[0] * t.e[2]);
         const Vd vz = t.e[2] * vmax(area[2], t.e[0] * t.e[1]);
-        t.v = vmax(vmax(vx, vmax(vy, vz)), vmax(splat(minSize_), load(w.minSize + at)));
+        t.v = vmax(vmax(vx, vmax(vy, vz)), vmax(minSize_, load(w.minSize + at)));
         t.lhs = t.v * vmax(t.fvSum, t.v) * splat(kSafety);
         return t;
     }
@@ -298,14 +314,25 @@ private:
         Vd out = splat(std::numeric_limits<double>::max());
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            out = vmin(out, vmax(splat(hi_[i]), load(w.hi[i] + at)) -
-                                vmin(splat(lo_[i]), load(w.lo[i] + at)));
+            out = vmin(out, vmax(hi_[i], load(w.hi[i] + at)) - vmin(lo_[i], load(w.lo[i] + at)));
         }
         return out;
     }
 
-    double lo_[3], hi_[3], minExtent_[3], minArea_[3];
-    double maxFv_, minSize_;
+    // The model, fixed by K or read at run time (Any). Each use is inlined with a constant
+    // argument, so for a fixed kind it folds to a constant and the dead branches go.
+    [[gnu::always_inline]] bool sphere() const {
+        if constexpr (K == BoundKind::Any) return sphere_;
+        return K == BoundKind::Sphere;
+    }
+    [[gnu::always_inline]] bool kIs(double k) const {
+        if constexpr (K == BoundKind::Any) return !sphere_ && k_ == k;
+        return (K == BoundKind::BoxK0 && k == 0.0) || (K == BoundKind::BoxK1 && k == 1.0) ||
+               (K == BoundKind::BoxK2 && k == 2.0);
+    }
+
+    Vd lo_[3], hi_[3], minExtent_[3], minArea_[3]; // the query's values in every lane
+    Vd maxFv_, minSize_;
     double k_;
     bool sphere_;
 };

@@ -70,6 +70,42 @@ double cost(const CostModel& m, const std::vector<ClusterUnit>& u, std::size_t i
     return i < j ? m.mergeCost(u[i], u[j]) : m.mergeCost(u[j], u[i]);
 }
 
+// The query compiled for the model's bound kind (what MergeBvh runs) answers as the generic
+// one (K = Any) that the test below checks against the scalar test: same verdicts, same bounds.
+template <int W, BoundKind K>
+void expectKindAsAny(const CostModel& m, const PackedRegion& qr, const PackedExtra& qe,
+                     const WideRegions& w, double threshold) {
+    const WideQueryT<W> any(m, qr, qe);
+    const WideQueryT<W, K> fixed(m, qr, qe);
+    EXPECT_EQ(fixed.exceeds(w, threshold), any.exceeds(w, threshold));
+    double a[4];
+    double f[4];
+    any.bounds(w, a);
+    fixed.bounds(w, f);
+    for (int l = 0; l < 4; ++l)
+        EXPECT_EQ(f[l], a[l]);
+}
+
+template <int W>
+void expectModelKindAsAny(const CostModel& m, const PackedRegion& qr, const PackedExtra& qe,
+                          const WideRegions& w, double threshold) {
+    switch (boundKindOf(m)) {
+    case BoundKind::Sphere: expectKindAsAny<W, BoundKind::Sphere>(m, qr, qe, w, threshold); break;
+    case BoundKind::BoxK0: expectKindAsAny<W, BoundKind::BoxK0>(m, qr, qe, w, threshold); break;
+    case BoundKind::BoxK1: expectKindAsAny<W, BoundKind::BoxK1>(m, qr, qe, w, threshold); break;
+    case BoundKind::BoxK2: expectKindAsAny<W, BoundKind::BoxK2>(m, qr, qe, w, threshold); break;
+    case BoundKind::Any: break;
+    }
+}
+
+TEST(MergeBvh, BoundKindOfNamesTheModel) {
+    EXPECT_EQ(boundKindOf(CostModel(VolumeType::Sphere, 0.0)), BoundKind::Sphere);
+    EXPECT_EQ(boundKindOf(CostModel(VolumeType::Aabb, 0.0)), BoundKind::BoxK0);
+    EXPECT_EQ(boundKindOf(CostModel(VolumeType::Aabb, 1.0)), BoundKind::BoxK1);
+    EXPECT_EQ(boundKindOf(CostModel(VolumeType::Aabb, 2.0)), BoundKind::BoxK2);
+    EXPECT_EQ(boundKindOf(CostModel(VolumeType::Aabb, 1.5)), BoundKind::Any);
+}
+
 TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -120,6 +156,8 @@ TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
                     EXPECT_EQ(lane, PackedPairTest(m, t).exceeds(q, s))
                         << toString(model.volume) << " k=" << model.k << " lane " << l;
                     EXPECT_EQ((query4.exceeds(w, t) >> l & 1u) != 0, lane);
+                    expectModelKindAsAny<2>(m, qr, qe, w, t);
+                    expectModelKindAsAny<4>(m, qr, qe, w, t);
                 }
             }
         }
