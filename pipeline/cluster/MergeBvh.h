@@ -10,10 +10,7 @@
 // slots. Wide nodes (as in Embree's BVH4) halve the depth and replace the branchy node-by-node
 // recursion of a binary tree by one vector test per node. The queries exist twice: for the
 // baseline target (two lanes per SSE2 vector) and compiled for AVX2 (four lanes per vector,
-// a third fewer instructions), picked at run time from what the processor has, and each once
-// per bound kind (sphere, box with k = 0, 1 or 2, any other k: WideBounds.h), so that a query
-// runs only its model's arithmetic, with no branch on the model per node test (10 % fewer
-// instructions over a whole k = 0 clustering).
+// a third fewer instructions), picked at run time from what the processor has.
 // One hierarchy per size class (the caller's key, e.g. the binary exponent of the radius):
 // real scenes mix bolts and floor plates, and a node holding both can bound neither the cost
 // of joining a big part (at least its volume) nor that of a small one (low fill), so mixed
@@ -31,7 +28,11 @@
 #pragma once
 
 #include <array>
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <vector>
 
 #include "pipeline/cluster/WideBounds.h"
@@ -49,8 +50,8 @@ class MergeBvh {
 public:
     struct alignas(64) Node {
         WideRegions slots{};
-        std::uint32_t child[4] = {}; // kItem | the item's position, or a node index
-        std::uint32_t end[4] = {};   // one past the last item position below the slot; 0: unused
+        alignas(16) std::uint32_t child[4] = {}; // kItem | the item's position, or a node index
+        alignas(16) std::uint32_t end[4] = {};   // one past the last item position below the slot; 0: unused
     };
     static constexpr std::uint32_t kItem = 0x80000000u;
 
@@ -97,9 +98,10 @@ private:
                                            Visit& visit) const;
     template <int W, BoundKind K, class Visit>
     [[gnu::always_inline]] void joinWith(double threshold, Visit& visit) const;
+    class Wave;
     template <int W, BoundKind K, class Visit>
     [[gnu::always_inline]] void joinItem(std::uint32_t p, const std::vector<Entry>& targets,
-                                         double threshold, Visit& visit) const;
+                                         double threshold, Wave (&waves)[2], Visit& visit) const;
     template <BoundKind K, class Visit>
     void searchKind(std::uint32_t self, const double& threshold, Visit& visit, Simd simd) const {
 #if HLOD_WIDE_AVX2
@@ -133,31 +135,87 @@ private:
         joinWith<4, K>(threshold, visit);
     }
 #endif
-    // Depth first from each target entry: f(entry, node, push) tests the entry's node and
-    // calls push(Entry) for what to descend into.
-    template <class F>
-    [[gnu::always_inline]] void descend(const std::vector<Entry>& targets, F&& f) const {
-        std::array<Entry, 128> stack;
-        const std::size_t count = targets.size();
-        for (std::size_t i = 0; i < count; ++i) {
-            // The next target's node is tested next whatever this one holds: its cache lines
-            // load while this one's subtree is tested.
-            if (i + 1 < count) prefetchNode(targets[i + 1].node);
-            const Entry& target = targets[i];
-            std::size_t top = 0;
-            stack[top++] = target;
-            while (top > 0) {
-                const Entry e = stack[--top];
-                f(e, nodes_[e.node], [&](const Entry& child) { stack[top++] = child; });
+    // Entries of one breadth-first wave, with room for what the next wave may add (at most
+    // four per entry tested), written without a branch per entry.
+    class Wave {
+    public:
+        Entry* reserve(std::size_t n) {
+            if (n > capacity_) {
+                capacity_ = std::max(n, 2 * capacity_);
+                data_ = std::make_unique<Entry[]>(capacity_);
             }
+            return data_.get();
+        }
+
+    private:
+        std::unique_ptr<Entry[]> data_;
+        std::size_t capacity_ = 0;
+    };
+    // Breadth first from the target entries: test(a, b) tests two nodes (a's lanes that
+    // exceed in bits 0-3, b's in bits 4-7), use(entry, node, exceeding, out) writes what to
+    // descend into at out (at most four entries) and returns how many. The tests of a wave do
+    // not depend on each other, so the processor overlaps them (a depth-first walk waits on
+    // each test's outcome to know the next node: the join was bound by that latency, not by
+    // its arithmetic); they run two at a time (WideQueryT::exceeds2).
+    template <class Test, class Use>
+    [[gnu::always_inline]] void sweep(const std::vector<Entry>& targets, Wave (&waves)[2],
+                                      Test&& test, Use&& use) const {
+        const Entry* in = targets.data();
+        std::size_t count = targets.size();
+        for (int w = 0; count != 0; w ^= 1) {
+            Entry* out = waves[w].reserve(4 * count);
+            std::size_t next = 0;
+            std::size_t i = 0;
+            for (; i + 1 < count; i += 2) {
+                // A few entries ahead: their cache lines load while these are tested.
+                if (i + 5 < count) {
+                    prefetchNode(in[i + 4].node);
+                    prefetchNode(in[i + 5].node);
+                }
+                const Node& a = nodes_[in[i].node];
+                const Node& b = nodes_[in[i + 1].node];
+                const unsigned exceeding = test(a, b);
+                next += use(in[i], a, exceeding & 0xfu, out + next);
+                next += use(in[i + 1], b, exceeding >> 4, out + next);
+            }
+            if (i < count) {
+                const Node& a = nodes_[in[i].node];
+                next += use(in[i], a, test(a, a) & 0xfu, out + next);
+            }
+            in = out;
+            count = next;
         }
     }
+    // Writes an entry for each lane in `lanes` (a full mask each) at out, without branches;
+    // returns how many. Unrolled by hand, each entry one 64-bit store (node in the low half).
+    [[gnu::always_inline]] static std::size_t appendLanes(const Node& node, unsigned lanes,
+                                                          Entry* out) {
+        static_assert(sizeof(Entry) == 8 && offsetof(Entry, node) == 0);
+        std::size_t m = 0;
+        const auto put = [&](int l) __attribute__((always_inline)) {
+            const std::uint64_t entry = node.child[l] | std::uint64_t{0xfu} << 32;
+            std::memcpy(out + m, &entry, sizeof entry);
+            m += (lanes >> l) & 1u;
+        };
+        put(0);
+        put(1);
+        put(2);
+        put(3);
+        return m;
+    }
     // Lanes holding an item after position p (each pair is met from its first item only).
-    static unsigned laterThan(const Node& node, std::uint32_t p) {
+    // (SSE2: one compare of the four ends; they are below 2^31, so a signed compare does.)
+    [[gnu::always_inline]] static unsigned laterThan(const Node& node, std::uint32_t p) {
+#if defined(__SSE2__)
+        const __m128i end = _mm_load_si128(reinterpret_cast<const __m128i*>(node.end));
+        const __m128i later = _mm_cmpgt_epi32(end, _mm_set1_epi32(static_cast<int>(p + 1)));
+        return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(later)));
+#else
         unsigned out = 0;
         for (int l = 0; l < 4; ++l)
             out |= node.end[l] > p + 1 ? 1u << l : 0u;
         return out;
+#endif
     }
     static double diagonal2(const PackedRegion& r) {
         double d = 0.0;
@@ -173,11 +231,21 @@ private:
             __builtin_prefetch(at + 64 * line);
     }
     // Lanes holding a child node (not an item, not unused).
-    static unsigned nodeLanes(const Node& node) {
+    // (SSE2: kItem is the sign bit of child, and unused lanes have end 0.)
+    [[gnu::always_inline]] static unsigned nodeLanes(const Node& node) {
+#if defined(__SSE2__)
+        const __m128i child = _mm_load_si128(reinterpret_cast<const __m128i*>(node.child));
+        const __m128i end = _mm_load_si128(reinterpret_cast<const __m128i*>(node.end));
+        const __m128i unused = _mm_cmpeq_epi32(end, _mm_setzero_si128());
+        const auto items = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(child)));
+        const auto none = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(unused)));
+        return ~(items | none) & 0xfu;
+#else
         unsigned out = 0;
         for (int l = 0; l < 4; ++l)
             out |= node.end[l] != 0 && (node.child[l] & kItem) == 0 ? 1u << l : 0u;
         return out;
+#endif
     }
 
     struct Slot {
@@ -224,17 +292,25 @@ void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit
     case BoundKind::BoxK0: searchKind<BoundKind::BoxK0>(self, threshold, visit, simd); return;
     case BoundKind::BoxK1: searchKind<BoundKind::BoxK1>(self, threshold, visit, simd); return;
     case BoundKind::BoxK2: searchKind<BoundKind::BoxK2>(self, threshold, visit, simd); return;
-    case BoundKind::Any: searchKind<BoundKind::Any>(self, threshold, visit, simd); return;
+    case BoundKind::Any:
+    case BoundKind::BoxK0Single: searchKind<BoundKind::Any>(self, threshold, visit, simd); return;
     }
 }
 
 template <class Visit> void MergeBvh::join(double threshold, Visit&& visit, Simd simd) const {
     switch (kind_) {
     case BoundKind::Sphere: joinKind<BoundKind::Sphere>(threshold, visit, simd); return;
-    case BoundKind::BoxK0: joinKind<BoundKind::BoxK0>(threshold, visit, simd); return;
+    case BoundKind::BoxK0:
+        if (singleUsable(threshold)) {
+            joinKind<BoundKind::BoxK0Single>(threshold, visit, simd);
+        } else {
+            joinKind<BoundKind::BoxK0>(threshold, visit, simd);
+        }
+        return;
     case BoundKind::BoxK1: joinKind<BoundKind::BoxK1>(threshold, visit, simd); return;
     case BoundKind::BoxK2: joinKind<BoundKind::BoxK2>(threshold, visit, simd); return;
-    case BoundKind::Any: joinKind<BoundKind::Any>(threshold, visit, simd); return;
+    case BoundKind::Any:
+    case BoundKind::BoxK0Single: joinKind<BoundKind::Any>(threshold, visit, simd); return;
     }
 }
 
@@ -298,6 +374,7 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
     constexpr std::uint32_t kNoParent = 0xffffffffu;
     std::vector<std::vector<Entry>> kept(2);
     kept[0].push_back(Entry{root_, 0xfu});
+    Wave waves[2];
     std::vector<Frame> frames{Frame{root_, 0, 1, kNoParent, 0}};
     while (!frames.empty()) {
         const Frame f = frames.back();
@@ -306,26 +383,33 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
         PackedExtra extra = rootExtra_;
         if (f.parent != kNoParent) getLane(nodes_[f.parent].slots, f.lane, region, extra);
         const WideQueryT<W, K> query(*model_, region, extra);
-        const double size = diagonal2(region);
+        const auto size = static_cast<float>(diagonal2(region));
         if (kept.size() <= f.depth) kept.resize(f.depth + 1);
         const std::vector<Entry>& targets = kept[f.depth - 1];
         // The targets' lanes this group may still pair with; a node lane at least as large as
-        // the group is opened here, a smaller one is left for the group's parts to test.
+        // the group is opened here, a smaller one is left for the group's parts to test. The
+        // list grows by at most one entry per test (sized ahead, trimmed after).
         std::vector<Entry>& out = kept[f.depth];
-        out.clear();
-        descend(targets, [&](const Entry& e, const Node& node, auto&& push) {
-            const unsigned keep =
-                e.mask & laterThan(node, f.begin) & ~query.exceeds(node.slots, threshold);
-            unsigned open = keep & nodeLanes(node);
-            if (open != 0) open &= diagonalAbove<W>(node.slots, size);
-            for (unsigned m = open; m != 0; m &= m - 1)
-                push(Entry{node.child[__builtin_ctz(m)], 0xfu});
-            if ((keep & ~open) != 0) out.push_back(Entry{e.node, keep & ~open});
-        });
+        std::size_t kept0 = 0;
+        const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
+            return query.exceeds2(a.slots, b.slots, threshold);
+        };
+        sweep(targets, waves, test,
+              [&](const Entry& e, const Node& node, unsigned exceeding,
+                  Entry* children) __attribute__((always_inline)) {
+                      const unsigned keep = e.mask & laterThan(node, f.begin) & ~exceeding;
+                      const unsigned open =
+                          keep & nodeLanes(node) & diagonalAbove(node.slots, size);
+                      if (out.size() <= kept0) out.resize(2 * kept0 + 64);
+                      out[kept0] = Entry{e.node, keep & ~open};
+                      kept0 += (keep & ~open) != 0;
+                      return appendLanes(node, open, children);
+                  });
+        out.resize(kept0);
         const Node& group = nodes_[f.q];
         for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
             const std::uint32_t c = group.child[l];
-            if ((c & kItem) != 0) joinItem<W, K>(c & ~kItem, out, threshold, visit);
+            if ((c & kItem) != 0) joinItem<W, K>(c & ~kItem, out, threshold, waves, visit);
         }
         for (int l = 3; l >= 0; --l) {
             const std::uint32_t c = group.child[l];
@@ -337,19 +421,22 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
 
 template <int W, BoundKind K, class Visit>
 inline void MergeBvh::joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
-                               Visit& visit) const {
+                               Wave (&waves)[2], Visit& visit) const {
     const WideQueryT<W, K> query = queryOf<W, K>(p);
-    descend(targets, [&](const Entry& e, const Node& node, auto&& push) {
-        unsigned keep = e.mask & laterThan(node, p) & ~query.exceeds(node.slots, threshold);
-        for (; keep != 0; keep &= keep - 1) {
-            const std::uint32_t c = node.child[__builtin_ctz(keep)];
-            if ((c & kItem) != 0) {
-                visit(order_[p], order_[c & ~kItem]);
-            } else {
-                push(Entry{c, 0xfu});
-            }
-        }
-    });
+    const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
+        return query.exceeds2(a.slots, b.slots, threshold);
+    };
+    sweep(targets, waves, test,
+          [&](const Entry& e, const Node& node, unsigned exceeding,
+              Entry* children) __attribute__((always_inline)) {
+                  const unsigned keep = e.mask & laterThan(node, p) & ~exceeding;
+                  const unsigned nodes = nodeLanes(node);
+                  // Items are rare (a few pairs per item against tens of nodes tested): a
+                  // branch.
+                  for (unsigned items = keep & ~nodes; items != 0; items &= items - 1)
+                      visit(order_[p], order_[node.child[__builtin_ctz(items)] & ~kItem]);
+                  return appendLanes(node, keep & nodes, children);
+              });
 }
 
 } // namespace hlod

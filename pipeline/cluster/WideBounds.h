@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -120,27 +121,37 @@ template <class V> [[gnu::always_inline]] inline V vmin(V a, V b) { return a < b
 
 } // namespace wide
 
-// Bit l set when the box of lane l has a squared diagonal above `size2` (W lanes per vector).
-template <int W>
-[[gnu::always_inline]] inline unsigned diagonalAbove(const WideRegions& w, double size2) {
-    using L = wide::Lanes<W>;
-    unsigned out = 0;
-    for (int at = 0; at < 4; at += W) {
-        typename L::Vd d2 = L::splat(0.0);
+// Bit l set when the box of lane l has a squared diagonal above `size2`, in single precision
+// (one 128-bit vector): it only decides which nodes a join group opens itself, never which
+// pairs the join reports.
+[[gnu::always_inline]] inline unsigned diagonalAbove(const WideRegions& w, float size2) {
+    using F4 = float __attribute__((vector_size(16)));
+    const auto load = [](const float* p) __attribute__((always_inline)) {
+        F4 x;
+        std::memcpy(&x, p, sizeof x);
+        return x;
+    };
+    F4 d2{};
 #pragma GCC unroll 3
-        for (int i = 0; i < 3; ++i) {
-            const typename L::Vd x = L::load(w.hi[i] + at) - L::load(w.lo[i] + at);
-            d2 += x * x;
-        }
-        out |= L::bits(d2 > L::splat(size2)) << at;
+    for (int i = 0; i < 3; ++i) {
+        const F4 x = load(w.hi[i]) - load(w.lo[i]);
+        d2 += x * x;
     }
-    return out;
+    const auto above = d2 > F4{size2, size2, size2, size2};
+#if defined(__SSE2__)
+    return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(above)));
+#else
+    return static_cast<unsigned>((above[0] & 1) | (above[1] & 2) | (above[2] & 4) |
+                                 (above[3] & 8));
+#endif
 }
 
 // Which bound a query evaluates: known at compile time (one of the fixed kinds, so the
 // branches on the model fold away and only that bound's arithmetic is emitted), or Any: read
 // from the model at run time (any k; the tests use it).
-enum class BoundKind { Any, Sphere, BoxK0, BoxK1, BoxK2 };
+// BoxK0Single: the box bound for k = 0 evaluated in single precision (WideQueryT::exceeds;
+// the self-join uses it where singleUsable(threshold)).
+enum class BoundKind { Any, Sphere, BoxK0, BoxK1, BoxK2, BoxK0Single };
 
 // The kind for `model`: Sphere, BoxK0/1/2 for k = 0, 1, 2, else Any.
 inline BoundKind boundKindOf(const CostModel& model) {
@@ -150,6 +161,144 @@ inline BoundKind boundKindOf(const CostModel& model) {
     if (model.k() == 2.0) return BoundKind::BoxK2;
     return BoundKind::Any;
 }
+
+// Whether the single-precision k = 0 test (BoundKind::BoxK0Single) runs at `threshold`: the
+// threshold and what it is compared with stay in single precision's normal range.
+// (Beyond 1e-15..1e15 squared volumes near the threshold would leave single precision's range
+// and the test would prune little.)
+inline bool singleUsable(double threshold) { return threshold >= 1e-15 && threshold <= 1e15; }
+
+namespace wide {
+
+// The box bound for k = 0 in single precision, four lanes in one 128-bit vector: no
+// conversions to double and fewer instructions than the double test, for the self-join's node
+// tests. It is slightly weaker than the double test, never stronger. It tests
+// v * max(fvSum, v) > (threshold / kSafety) * fvSum, as the double test does (CostBounds.h):
+// - Every operation on floats is correctly rounded: its result is within a relative 2^-24 of
+//   the exact result of the same operation on the same (float) inputs, a subtraction of two
+//   floats too, however close they are. The packed regions are the inputs (already rounded
+//   outward, CostBounds.h), so no error comes before the first operation.
+// - Only e_i = max(m, gap + s) (m = max(wa, wb), s = wa + wb, so m <= s <= 2m) can cancel:
+//   gap < 0 with gap + s > m means |gap| < s - m <= s / 2 <= m < gap + s, so the absolute
+//   error (the two roundings of gap and s, and the sum's own) stays under 7 * 2^-24 of the
+//   result; where gap + s <= m the computed e_i exceeds m, the exact e_i, by at most that.
+// - The rest (sums of positives, products, maxima) adds at most 2^-24 per operation: the
+//   left side is within 60 * 2^-24 < 4e-6 of its exact value, the right side within 4 * 2^-24
+//   (the threshold's division and rounding, the sum, the product). kSafety (1 - 2^-12,
+//   SingleThreshold) covers both
+//   sixty times over, so a lane is rejected only when the exact bound of CostBounds.h exceeds
+//   the threshold.
+// - Range (the caller runs it only where singleUsable(threshold), so the threshold is a
+//   normal float): fvSum is raised to at least 1e-36 / threshold (SingleThreshold), so the
+//   right side stays a normal float (no underflow), and raising fvSum only lowers the bound
+//   (cost >= v * max(1, v / fvSum) falls as fvSum grows). A right side at or above 1e37 never
+//   rejects (its rounding near the top of the range is not covered). Below that, a left side
+//   that overflows to infinity has an exact value above 3.4e38, so rejecting is right; an
+//   underflow only lowers the left side; a NaN compares false (kept).
+struct SingleThreshold {
+    explicit SingleThreshold(double threshold)
+        : value(static_cast<float>(threshold / kSafety)),
+          minFvSum(static_cast<float>(1e-36 / threshold)) {}
+    // The margin of the test below: 1 - 2^-12.
+    static constexpr double kSafety = 1.0 - 1.0 / 4096.0;
+    float value;    // the threshold over kSafety, rounded to nearest
+    float minFvSum; // F*V sums are raised to this, so that value * fvSum stays a normal float
+};
+
+// N = 4: one node's four lanes in a 128-bit vector; N = 8: two nodes' lanes in a 256-bit
+// vector (inlined into AVX2 code one instruction per operation; elsewhere two), which halves
+// the work per node where the processor has AVX2.
+using F4 = float __attribute__((vector_size(16)));
+using F8 = float __attribute__((vector_size(32)));
+using I4 = int __attribute__((vector_size(16)));
+using I8 = int __attribute__((vector_size(32)));
+
+template <int N> class SingleBoxK0 {
+    using Vf = std::conditional_t<N == 4, F4, F8>;
+    using Vi = std::conditional_t<N == 4, I4, I8>;
+
+public:
+    SingleBoxK0(const PackedRegion& r, const PackedExtra& e) {
+        for (int i = 0; i < 3; ++i) {
+            lo_[i] = splat(r.lo[i]);
+            hi_[i] = splat(r.hi[i]);
+            minExtent_[i] = splat(e.minExtent[i]);
+            minArea_[i] = splat(e.minArea[i]);
+        }
+        maxFv_ = splat(r.maxFv);
+        minSize_ = splat(r.minSize);
+    }
+
+    // Bit l set when lane l's pair bound certainly exceeds `t` (the threshold, singleUsable):
+    // lanes 0-3 of node a, for N = 8 lanes 4-7 those of node b (N = 4 ignores b).
+    [[gnu::always_inline]] unsigned exceeds(const WideRegions& a, const WideRegions& b,
+                                            const SingleThreshold& t) const {
+        const Vf fvSum = vmax(maxFv_ + loadLanes(a.maxFv, b.maxFv), splat(t.minFvSum));
+        Vf e[3];
+        Vf area[3];
+#pragma GCC unroll 3
+        for (int i = 0; i < 3; ++i) {
+            const Vf gap = vmax(loadLanes(a.lo[i], b.lo[i]) - hi_[i], lo_[i] - loadLanes(a.hi[i], b.hi[i]));
+            const Vf wb = loadLanes(a.minExtent[i], b.minExtent[i]);
+            e[i] = vmax(vmax(minExtent_[i], wb), gap + (minExtent_[i] + wb));
+            area[i] = vmax(minArea_[i], loadLanes(a.minArea[i], b.minArea[i]));
+        }
+        const Vf vx = e[0] * vmax(area[0], e[1] * e[2]);
+        const Vf vy = e[1] * vmax(area[1], e[0] * e[2]);
+        const Vf vz = e[2] * vmax(area[2], e[0] * e[1]);
+        // (The maxima paired so that the chain from the loads to the verdict stays short: the
+        // processor overlaps the tests of a wave as far as their latency allows.)
+        const Vf v = vmax(vmax(vx, vy), vmax(vz, vmax(minSize_, loadLanes(a.minSize, b.minSize))));
+        const Vf rhs = splat(t.value) * fvSum;
+        return bits((v * vmax(fvSum, v) > rhs) & (rhs < splat(1e37f)));
+    }
+
+private:
+    [[gnu::always_inline]] static F4 load4(const float* p) {
+        F4 x;
+        std::memcpy(&x, p, sizeof x);
+        return x;
+    }
+    [[gnu::always_inline]] static Vf loadLanes(const float (&x)[4], const float (&y)[4]) {
+        if constexpr (N == 4) {
+            (void)y;
+            return load4(x);
+        } else {
+            return __builtin_shufflevector(load4(x), load4(y), 0, 1, 2, 3, 4, 5, 6, 7);
+        }
+    }
+    [[gnu::always_inline]] static Vf splat(float x) {
+        Vf v{};
+        for (int l = 0; l < N; ++l)
+            v[l] = x;
+        return v;
+    }
+    [[gnu::always_inline]] static unsigned bits4(I4 m) {
+#if defined(__SSE2__)
+        return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(m)));
+#else
+        return static_cast<unsigned>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+#endif
+    }
+    // (For N = 8 two 128-bit sign-mask moves, as Lanes<4>::bits.)
+    [[gnu::always_inline]] static unsigned bits(Vi m) {
+        if constexpr (N == 4) {
+            return bits4(m);
+        } else {
+            return bits4(__builtin_shufflevector(m, m, 0, 1, 2, 3)) |
+                   bits4(__builtin_shufflevector(m, m, 4, 5, 6, 7)) << 4;
+        }
+    }
+
+    Vf lo_[3], hi_[3], minExtent_[3], minArea_[3];
+    Vf maxFv_, minSize_;
+};
+
+struct NoSingle {
+    NoSingle(const PackedRegion&, const PackedExtra&) {}
+};
+
+} // namespace wide
 
 // One query region against wide nodes, for one cost model (sphere, or box with its k), W lanes
 // per vector (2 or 4, see the header). Every member is inlined into its caller, so the
@@ -163,7 +312,8 @@ template <int W, BoundKind K = BoundKind::Any> class WideQueryT {
 
 public:
     WideQueryT(const CostModel& model, const PackedRegion& r, const PackedExtra& e)
-        : k_(model.k()), sphere_(model.volume() == VolumeType::Sphere) {
+        : single_(r, e), k_(model.k()), sphere_(model.volume() == VolumeType::Sphere) {
+        if constexpr (K == BoundKind::BoxK0Single) return; // tests in single_ only
         for (int i = 0; i < 3; ++i) {
             lo_[i] = splat(r.lo[i]);
             hi_[i] = splat(r.hi[i]);
@@ -175,16 +325,32 @@ public:
     }
 
     // Bit l set when lane l's pair bound exceeds `threshold`.
+    // (BoxK0Single: when the bound certainly exceeds it, wide::SingleBoxK0.)
     [[gnu::always_inline]] unsigned exceeds(const WideRegions& w, double threshold) const {
-        unsigned out = 0;
-        for (int at = 0; at < 4; at += W)
-            out |= exceedsPart(w, at, threshold) << at;
-        return out;
+        if constexpr (K == BoundKind::BoxK0Single) {
+            return single_.exceeds(w, w, wide::SingleThreshold(threshold)) & 0xfu;
+        } else {
+            unsigned out = 0;
+            for (int at = 0; at < 4; at += W)
+                out |= exceedsPart(w, at, threshold) << at;
+            return out;
+        }
+    }
+
+    // exceeds() of two nodes at once: a's lanes in bits 0-3, b's in bits 4-7 (BoxK0Single
+    // with W = 4 tests both in one vector).
+    [[gnu::always_inline]] unsigned exceeds2(const WideRegions& a, const WideRegions& b,
+                                             double threshold) const {
+        if constexpr (K == BoundKind::BoxK0Single && W == 4) {
+            return single_.exceeds(a, b, wide::SingleThreshold(threshold));
+        }
+        return exceeds(a, threshold) | exceeds(b, threshold) << 4;
     }
 
     // Lane l: a lower bound of the cost of the query with anything in slot l, for ordering a
     // search.
     [[gnu::always_inline]] void bounds(const WideRegions& w, double out[4]) const {
+        static_assert(K != BoundKind::BoxK0Single, "the single-precision kind only tests");
         for (int at = 0; at < 4; at += W)
             boundsPart(w, at, out + at);
     }
@@ -327,10 +493,14 @@ private:
     }
     [[gnu::always_inline]] bool kIs(double k) const {
         if constexpr (K == BoundKind::Any) return !sphere_ && k_ == k;
-        return (K == BoundKind::BoxK0 && k == 0.0) || (K == BoundKind::BoxK1 && k == 1.0) ||
-               (K == BoundKind::BoxK2 && k == 2.0);
+        return ((K == BoundKind::BoxK0 || K == BoundKind::BoxK0Single) && k == 0.0) ||
+               (K == BoundKind::BoxK1 && k == 1.0) || (K == BoundKind::BoxK2 && k == 2.0);
     }
 
+    // (Two nodes per vector where W = 4, AVX2; one node per 128-bit vector otherwise.)
+    [[no_unique_address]] std::conditional_t<K == BoundKind::BoxK0Single,
+                                             wide::SingleBoxK0<W == 4 ? 8 : 4>, wide::NoSingle>
+        single_;
     Vd lo_[3], hi_[3], minExtent_[3], minArea_[3]; // the query's values in every lane
     Vd maxFv_, minSize_;
     double k_;
