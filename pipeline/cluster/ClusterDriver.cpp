@@ -73,6 +73,7 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
     const double minExtent = clusteringMinExtent(boxes);
 
     TreeBuilder builder(model);
+    builder.reserve(2 * bounds.size());
     for (Id i = 0; i < bounds.size(); ++i) {
         builder.addLeaf(i, bounds[i].box, model.leaf(bounds[i].sphere, bounds[i].box, minExtent));
     }

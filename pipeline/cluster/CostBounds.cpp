@@ -20,25 +20,20 @@ Region emptyRegion() {
 
 namespace {
 
-// The next float towards -infinity / +infinity of a float that is not NaN (std::nextafter
-// without the library call: packing runs for every node of every level).
-float nextDown(float f) {
-    if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
-    if (f == -std::numeric_limits<float>::infinity()) return f;
-    const auto bits = std::bit_cast<std::uint32_t>(f);
-    return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
-}
-float nextUp(float f) { return -nextDown(-f); }
-
-// The float nearest to x on the side that keeps a bound valid.
+// The float nearest to x on the side that keeps a bound valid (x not NaN): the conversion,
+// then one step down (up) when it rounded the wrong way. Without branches: packing runs for
+// every node of every level, and which way a conversion rounds is a coin toss for the branch
+// predictor. A step down from a positive float is its bit pattern minus one, from a negative
+// one plus one, from a zero the negative smallest denormal (bits 0x80000001); +infinity steps
+// to the largest float, and -infinity never needs a step.
 float roundDown(double x) {
     const float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? nextDown(f) : f;
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    const std::uint32_t sign = bits >> 31;
+    const std::uint32_t step = (bits << 1) == 0 ? 0x80000001u : bits - 1u + 2u * sign;
+    return static_cast<double>(f) > x ? std::bit_cast<float>(step) : f;
 }
-float roundUp(double x) {
-    const float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? nextUp(f) : f;
-}
+float roundUp(double x) { return -roundDown(-x); }
 
 } // namespace
 

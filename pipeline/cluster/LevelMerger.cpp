@@ -135,6 +135,7 @@ public:
         groupOf_.resize(n);
         next_.assign(n, kNone);
         groups_.resize(n);
+        groups_.reserve(2 * n); // one more per merge: at most n - 1 (no reallocation)
         // Only the BVH build needs the regions and size classes (freed after it).
         std::vector<Region> regions(n);
         std::vector<int> classes(n);

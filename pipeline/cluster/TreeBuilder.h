@@ -20,6 +20,13 @@ class TreeBuilder {
 public:
     explicit TreeBuilder(CostModel model) : model_(model) {}
 
+    // Room for `nodes` nodes, so that adding them never moves the ones built (a tree over n
+    // leaves without single-child nodes has at most 2n - 1).
+    void reserve(std::size_t nodes) {
+        nodes_.reserve(nodes);
+        units_.reserve(nodes);
+    }
+
     const CostModel& model() const { return model_; }
     std::size_t size() const { return nodes_.size(); }
     const ClusterUnit& unit(Id node) const { return units_[node]; }
