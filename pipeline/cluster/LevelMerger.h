@@ -59,7 +59,9 @@
 // the sampled best() by branch and bound (the pair bound of CostBounds.h, four slots per
 // vector test, WideBounds.h); at rebuilds the neighbour lists come from one dual-tree
 // self-join pruned with the same bound (groups of units descend together, each unit finishes
-// alone). The units are numbered in Morton order of their centres inside a level, so a unit's
+// alone; breadth first, two nodes per test; for k = 0 in single precision with a margin, so it
+// may report a few pairs just above the graph budget, which the exact cost then drops). The
+// units are numbered in Morton order of their centres inside a level, so a unit's
 // neighbours lie close in memory. An inherited graph is contracted only at a level that
 // inherits it (the previous level keeps its graph and each unit's next position; most levels
 // rebuild), and the level's buffers are reused until the unit count halves.

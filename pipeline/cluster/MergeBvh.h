@@ -75,12 +75,16 @@ public:
                 Simd simd = bestSimd()) const;
 
     // Self-join: calls visit(i, j) once for every unordered pair of distinct items whose
-    // pair bound (and those of the slots holding them) does not exceed `threshold`.
+    // pair bound (and those of the slots holding them) does not exceed `threshold` (for the
+    // box model with k = 0 the node test runs in single precision with a margin, WideBounds.h,
+    // so a pair whose bound exceeds the threshold by less than 2.4e-4 of it may be reported
+    // too; the visitor decides on the exact cost).
     // Dual-tree: the hierarchy's own nodes are the query groups. A group tests the target
     // lanes its parent kept, opens the target nodes at least as large as itself and keeps the
     // rest for its parts; an item finally descends what its group kept. Only slots holding
     // items after the query's first item (in the hierarchy's order) are tested, so each pair
-    // is met once, from its first item.
+    // is met once, from its first item. Both walk the targets breadth first (sweep), testing
+    // two nodes at a time.
     template <class Visit> void join(double threshold, Visit&& visit, Simd simd = bestSimd()) const;
 
 private:
@@ -284,7 +288,7 @@ private:
 // Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
 // items, plus the item) and the tops above them add log4 of the class count (at most 6 for
 // the 2,100 binary exponents of a double), so a descent's stack (at most four slots pushed per
-// node popped) fits in 128 entries.
+// node popped) fits in 128 entries. (The join walks breadth first, in growing buffers.)
 template <class Visit>
 void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit, Simd simd) const {
     switch (kind_) {
