@@ -104,7 +104,7 @@ private:
     [[gnu::always_inline]] void joinWith(double threshold, Visit& visit) const;
     class Wave;
     template <int W, BoundKind K, class Visit>
-    [[gnu::always_inline]] void joinItem(std::uint32_t p, const std::vector<Entry>& targets,
+    [[gnu::always_inline]] void joinItem(std::uint32_t p, const Entry* targets, std::size_t count,
                                          double threshold, Wave (&waves)[2], Visit& visit) const;
     template <BoundKind K, class Visit>
     void searchKind(std::uint32_t self, const double& threshold, Visit& visit, Simd simd) const {
@@ -162,10 +162,9 @@ private:
     // each test's outcome to know the next node: the join was bound by that latency, not by
     // its arithmetic); they run two at a time (WideQueryT::exceeds2).
     template <class Test, class Use>
-    [[gnu::always_inline]] void sweep(const std::vector<Entry>& targets, Wave (&waves)[2],
+    [[gnu::always_inline]] void sweep(const Entry* targets, std::size_t count, Wave (&waves)[2],
                                       Test&& test, Use&& use) const {
-        const Entry* in = targets.data();
-        std::size_t count = targets.size();
+        const Entry* in = targets;
         for (int w = 0; count != 0; w ^= 1) {
             Entry* out = waves[w].reserve(4 * count);
             std::size_t next = 0;
@@ -376,8 +375,12 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
         int lane;
     };
     constexpr std::uint32_t kNoParent = 0xffffffffu;
+    // Kept lists by depth: kept[d][0, keptSize[d]) (the buffers only grow, so they are not
+    // cleared or refilled with zeros frame after frame).
     std::vector<std::vector<Entry>> kept(2);
+    std::vector<std::size_t> keptSize(2, 0);
     kept[0].push_back(Entry{root_, 0xfu});
+    keptSize[0] = 1;
     Wave waves[2];
     std::vector<Frame> frames{Frame{root_, 0, 1, kNoParent, 0}};
     while (!frames.empty()) {
@@ -388,17 +391,19 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
         if (f.parent != kNoParent) getLane(nodes_[f.parent].slots, f.lane, region, extra);
         const WideQueryT<W, K> query(*model_, region, extra);
         const auto size = static_cast<float>(diagonal2(region));
-        if (kept.size() <= f.depth) kept.resize(f.depth + 1);
-        const std::vector<Entry>& targets = kept[f.depth - 1];
+        if (kept.size() <= f.depth) {
+            kept.resize(f.depth + 1);
+            keptSize.resize(f.depth + 1, 0);
+        }
         // The targets' lanes this group may still pair with; a node lane at least as large as
         // the group is opened here, a smaller one is left for the group's parts to test. The
-        // list grows by at most one entry per test (sized ahead, trimmed after).
+        // list grows by at most one entry per test.
         std::vector<Entry>& out = kept[f.depth];
         std::size_t kept0 = 0;
         const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
             return query.exceeds2(a.slots, b.slots, threshold);
         };
-        sweep(targets, waves, test,
+        sweep(kept[f.depth - 1].data(), keptSize[f.depth - 1], waves, test,
               [&](const Entry& e, const Node& node, unsigned exceeding,
                   Entry* children) __attribute__((always_inline)) {
                       const unsigned keep = e.mask & laterThan(node, f.begin) & ~exceeding;
@@ -409,11 +414,11 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
                       kept0 += (keep & ~open) != 0;
                       return appendLanes(node, open, children);
                   });
-        out.resize(kept0);
+        keptSize[f.depth] = kept0;
         const Node& group = nodes_[f.q];
         for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
             const std::uint32_t c = group.child[l];
-            if ((c & kItem) != 0) joinItem<W, K>(c & ~kItem, out, threshold, waves, visit);
+            if ((c & kItem) != 0) joinItem<W, K>(c & ~kItem, out.data(), kept0, threshold, waves, visit);
         }
         for (int l = 3; l >= 0; --l) {
             const std::uint32_t c = group.child[l];
@@ -424,13 +429,13 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
 }
 
 template <int W, BoundKind K, class Visit>
-inline void MergeBvh::joinItem(std::uint32_t p, const std::vector<Entry>& targets, double threshold,
-                               Wave (&waves)[2], Visit& visit) const {
+inline void MergeBvh::joinItem(std::uint32_t p, const Entry* targets, std::size_t count,
+                               double threshold, Wave (&waves)[2], Visit& visit) const {
     const WideQueryT<W, K> query = queryOf<W, K>(p);
     const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
         return query.exceeds2(a.slots, b.slots, threshold);
     };
-    sweep(targets, waves, test,
+    sweep(targets, count, waves, test,
           [&](const Entry& e, const Node& node, unsigned exceeding,
               Entry* children) __attribute__((always_inline)) {
                   const unsigned keep = e.mask & laterThan(node, p) & ~exceeding;
