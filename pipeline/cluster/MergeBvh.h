@@ -28,6 +28,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -334,18 +335,35 @@ inline void MergeBvh::searchWith(std::uint32_t self, const double& threshold, Vi
         const Node& n = nodes_[e.node];
         double lb[4];
         q.bounds(n.slots, lb);
-        // Lanes in ascending bound order (insertion sort of at most four).
-        int lane[4];
+        // Lanes in ascending bound order, without branches (which order the bounds come in is
+        // a coin toss for the branch predictor): a key per lane, the bound's bits (bounds are
+        // not negative, so their bit patterns order as they do; the sign bit is cleared, so a
+        // used lane's key stays below an unused lane's) with the lane in the two lowest bits,
+        // sorted by a network of five compare-exchanges. The order only decides which slot is
+        // tried first; the tests below read the exact bounds.
+        constexpr std::uint64_t kUnused = ~std::uint64_t{0};
+        constexpr std::uint64_t kKeyBits = 0x7ffffffffffffffcu;
+        std::uint64_t key[4];
         int used = 0;
         for (int l = 0; l < 4; ++l) {
-            if (n.end[l] == 0) continue;
-            int at = used++;
-            while (at > 0 && lb[lane[at - 1]] > lb[l]) {
-                lane[at] = lane[at - 1];
-                --at;
-            }
-            lane[at] = l;
+            const std::uint64_t bits = (std::bit_cast<std::uint64_t>(lb[l]) & kKeyBits) |
+                                       static_cast<std::uint64_t>(l);
+            key[l] = n.end[l] == 0 ? kUnused : bits;
+            used += n.end[l] != 0 ? 1 : 0;
         }
+        const auto order = [&](int i, int j) __attribute__((always_inline)) {
+            const std::uint64_t lo = std::min(key[i], key[j]);
+            key[j] = std::max(key[i], key[j]);
+            key[i] = lo;
+        };
+        order(0, 1);
+        order(2, 3);
+        order(0, 2);
+        order(1, 3);
+        order(1, 2);
+        int lane[4];
+        for (int i = 0; i < 4; ++i)
+            lane[i] = static_cast<int>(key[i] & 3u);
         // Items at once, nearest first; nodes pushed farthest first so the nearest pops next.
         for (int i = 0; i < used; ++i) {
             const int l = lane[i];
