@@ -51,8 +51,9 @@ class MergeBvh {
 public:
     struct alignas(64) Node {
         WideRegions slots{};
+        // (16-byte aligned for the SSE2 lane masks, laterThan and nodeLanes.)
         alignas(16) std::uint32_t child[4] = {}; // kItem | the item's position, or a node index
-        alignas(16) std::uint32_t end[4] = {};   // one past the last item position below the slot; 0: unused
+        alignas(16) std::uint32_t end[4] = {}; // one past the last item position below; 0: unused
     };
     static constexpr std::uint32_t kItem = 0x80000000u;
 
@@ -436,7 +437,9 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
         const Node& group = nodes_[f.q];
         for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
             const std::uint32_t c = group.child[l];
-            if ((c & kItem) != 0) joinItem<W, K>(c & ~kItem, out.data(), kept0, threshold, waves, visit);
+            if ((c & kItem) != 0) {
+                joinItem<W, K>(c & ~kItem, out.data(), kept0, threshold, waves, visit);
+            }
         }
         for (int l = 3; l >= 0; --l) {
             const std::uint32_t c = group.child[l];

@@ -170,9 +170,10 @@ inline bool singleUsable(double threshold) { return threshold >= 1e-15 && thresh
 
 namespace wide {
 
-// The box bound for k = 0 in single precision, four lanes in one 128-bit vector: no
-// conversions to double and fewer instructions than the double test, for the self-join's node
-// tests. It is slightly weaker than the double test, never stronger. It tests
+// The box bound for k = 0 in single precision (four lanes of one node per 128-bit vector, or
+// two nodes' lanes per 256-bit vector, SingleBoxK0 below): no conversions to double and half
+// the operations per node, for the self-join's node tests. It is slightly weaker than the
+// double test, never stronger. It tests
 // v * max(fvSum, v) > (threshold / kSafety) * fvSum, as the double test does (CostBounds.h):
 // - Every operation on floats is correctly rounded: its result is within a relative 2^-24 of
 //   the exact result of the same operation on the same (float) inputs, a subtraction of two
@@ -184,10 +185,9 @@ namespace wide {
 //   result; where gap + s <= m the computed e_i exceeds m, the exact e_i, by at most that.
 // - The rest (sums of positives, products, maxima) adds at most 2^-24 per operation: the
 //   left side is within 60 * 2^-24 < 4e-6 of its exact value, the right side within 4 * 2^-24
-//   (the threshold's division and rounding, the sum, the product). kSafety (1 - 2^-12,
-//   SingleThreshold) covers both
-//   sixty times over, so a lane is rejected only when the exact bound of CostBounds.h exceeds
-//   the threshold.
+//   (the threshold's division and rounding, the sum, the product). The margin kSafety
+//   (SingleThreshold, 1 - 2^-12) covers both sixty times over, so a lane is rejected only
+//   when the exact bound of CostBounds.h exceeds the threshold.
 // - Range (the caller runs it only where singleUsable(threshold), so the threshold is a
 //   normal float): fvSum is raised to at least 1e-36 / threshold (SingleThreshold), so the
 //   right side stays a normal float (no underflow), and raising fvSum only lowers the bound
@@ -238,7 +238,8 @@ public:
         Vf area[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            const Vf gap = vmax(loadLanes(a.lo[i], b.lo[i]) - hi_[i], lo_[i] - loadLanes(a.hi[i], b.hi[i]));
+            const Vf gap =
+                vmax(loadLanes(a.lo[i], b.lo[i]) - hi_[i], lo_[i] - loadLanes(a.hi[i], b.hi[i]));
             const Vf wb = loadLanes(a.minExtent[i], b.minExtent[i]);
             e[i] = vmax(vmax(minExtent_[i], wb), gap + (minExtent_[i] + wb));
             area[i] = vmax(minArea_[i], loadLanes(a.minArea[i], b.minArea[i]));
