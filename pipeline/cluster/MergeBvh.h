@@ -27,13 +27,14 @@
 // self-join reports every pair that its test does not reject, once.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bit>
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "pipeline/cluster/WideBounds.h"
@@ -53,7 +54,7 @@ public:
         WideRegions slots{};
         // (16-byte aligned for the SSE2 lane masks, laterThan and nodeLanes.)
         alignas(16) std::uint32_t child[4] = {}; // kItem | the item's position, or a node index
-        alignas(16) std::uint32_t end[4] = {}; // one past the last item position below; 0: unused
+        alignas(16) std::uint32_t end[4] = {};   // one past the last item position below; 0: unused
     };
     static constexpr std::uint32_t kItem = 0x80000000u;
 
@@ -141,6 +142,30 @@ private:
         joinWith<4, K>(threshold, visit);
     }
 #endif
+    // Calls f(std::integral_constant<BoundKind, kind>{}): one instantiation per kind.
+    template <class F> static void withKind(BoundKind kind, F&& f) {
+        using enum BoundKind;
+        switch (kind) {
+        case Any:
+            f(std::integral_constant<BoundKind, Any>{});
+            return;
+        case Sphere:
+            f(std::integral_constant<BoundKind, Sphere>{});
+            return;
+        case BoxK0:
+            f(std::integral_constant<BoundKind, BoxK0>{});
+            return;
+        case BoxK1:
+            f(std::integral_constant<BoundKind, BoxK1>{});
+            return;
+        case BoxK2:
+            f(std::integral_constant<BoundKind, BoxK2>{});
+            return;
+        case BoxK0Single:
+            f(std::integral_constant<BoundKind, BoxK0Single>{});
+            return;
+        }
+    }
     // Entries of one breadth-first wave, with room for what the next wave may add (at most
     // four per entry tested), written without a branch per entry.
     class Wave {
@@ -292,31 +317,19 @@ private:
 // node popped) fits in 128 entries. (The join walks breadth first, in growing buffers.)
 template <class Visit>
 void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit, Simd simd) const {
-    switch (kind_) {
-    case BoundKind::Sphere: searchKind<BoundKind::Sphere>(self, threshold, visit, simd); return;
-    case BoundKind::BoxK0: searchKind<BoundKind::BoxK0>(self, threshold, visit, simd); return;
-    case BoundKind::BoxK1: searchKind<BoundKind::BoxK1>(self, threshold, visit, simd); return;
-    case BoundKind::BoxK2: searchKind<BoundKind::BoxK2>(self, threshold, visit, simd); return;
-    case BoundKind::Any:
-    case BoundKind::BoxK0Single: searchKind<BoundKind::Any>(self, threshold, visit, simd); return;
-    }
+    withKind(kind_, [&](auto kind) {
+        // (kind_ is never BoxK0Single, which only tests and has no bounds to order a search.)
+        constexpr BoundKind fixed =
+            kind.value == BoundKind::BoxK0Single ? BoundKind::BoxK0 : kind.value;
+        searchKind<fixed>(self, threshold, visit, simd);
+    });
 }
 
 template <class Visit> void MergeBvh::join(double threshold, Visit&& visit, Simd simd) const {
-    switch (kind_) {
-    case BoundKind::Sphere: joinKind<BoundKind::Sphere>(threshold, visit, simd); return;
-    case BoundKind::BoxK0:
-        if (singleUsable(threshold)) {
-            joinKind<BoundKind::BoxK0Single>(threshold, visit, simd);
-        } else {
-            joinKind<BoundKind::BoxK0>(threshold, visit, simd);
-        }
-        return;
-    case BoundKind::BoxK1: joinKind<BoundKind::BoxK1>(threshold, visit, simd); return;
-    case BoundKind::BoxK2: joinKind<BoundKind::BoxK2>(threshold, visit, simd); return;
-    case BoundKind::Any:
-    case BoundKind::BoxK0Single: joinKind<BoundKind::Any>(threshold, visit, simd); return;
-    }
+    // (k = 0: the node test in single precision where the threshold allows, WideBounds.h.)
+    const BoundKind kind =
+        kind_ == BoundKind::BoxK0 && singleUsable(threshold) ? BoundKind::BoxK0Single : kind_;
+    withKind(kind, [&](auto fixed) { joinKind<fixed.value>(threshold, visit, simd); });
 }
 
 template <int W, BoundKind K, class Visit>
@@ -347,8 +360,8 @@ inline void MergeBvh::searchWith(std::uint32_t self, const double& threshold, Vi
         std::uint64_t key[4];
         int used = 0;
         for (int l = 0; l < 4; ++l) {
-            const std::uint64_t bits = (std::bit_cast<std::uint64_t>(lb[l]) & kKeyBits) |
-                                       static_cast<std::uint64_t>(l);
+            const std::uint64_t bits =
+                (std::bit_cast<std::uint64_t>(lb[l]) & kKeyBits) | static_cast<std::uint64_t>(l);
             key[l] = n.end[l] == 0 ? kUnused : bits;
             used += n.end[l] != 0 ? 1 : 0;
         }
@@ -422,17 +435,17 @@ inline void MergeBvh::joinWith(double threshold, Visit& visit) const {
         const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
             return query.exceeds2(a.slots, b.slots, threshold);
         };
-        sweep(kept[f.depth - 1].data(), keptSize[f.depth - 1], waves, test,
-              [&](const Entry& e, const Node& node, unsigned exceeding,
-                  Entry* children) __attribute__((always_inline)) {
-                      const unsigned keep = e.mask & laterThan(node, f.begin) & ~exceeding;
-                      const unsigned open =
-                          keep & nodeLanes(node) & diagonalAbove(node.slots, size);
-                      if (out.size() <= kept0) out.resize(2 * kept0 + 64);
-                      out[kept0] = Entry{e.node, keep & ~open};
-                      kept0 += (keep & ~open) != 0;
-                      return appendLanes(node, open, children);
-                  });
+        sweep(
+            kept[f.depth - 1].data(), keptSize[f.depth - 1], waves, test,
+            [&](const Entry& e, const Node& node, unsigned exceeding, Entry* children)
+                __attribute__((always_inline)) {
+                    const unsigned keep = e.mask & laterThan(node, f.begin) & ~exceeding;
+                    const unsigned open = keep & nodeLanes(node) & diagonalAbove(node.slots, size);
+                    if (out.size() <= kept0) out.resize(2 * kept0 + 64);
+                    out[kept0] = Entry{e.node, keep & ~open};
+                    kept0 += (keep & ~open) != 0;
+                    return appendLanes(node, open, children);
+                });
         keptSize[f.depth] = kept0;
         const Node& group = nodes_[f.q];
         for (int l = 0; l < 4 && group.end[l] != 0; ++l) {
@@ -456,17 +469,18 @@ inline void MergeBvh::joinItem(std::uint32_t p, const Entry* targets, std::size_
     const auto test = [&](const Node& a, const Node& b) __attribute__((always_inline)) {
         return query.exceeds2(a.slots, b.slots, threshold);
     };
-    sweep(targets, count, waves, test,
-          [&](const Entry& e, const Node& node, unsigned exceeding,
-              Entry* children) __attribute__((always_inline)) {
-                  const unsigned keep = e.mask & laterThan(node, p) & ~exceeding;
-                  const unsigned nodes = nodeLanes(node);
-                  // Items are rare (a few pairs per item against tens of nodes tested): a
-                  // branch.
-                  for (unsigned items = keep & ~nodes; items != 0; items &= items - 1)
-                      visit(order_[p], order_[node.child[__builtin_ctz(items)] & ~kItem]);
-                  return appendLanes(node, keep & nodes, children);
-              });
+    sweep(
+        targets, count, waves, test,
+        [&](const Entry& e, const Node& node, unsigned exceeding, Entry* children)
+            __attribute__((always_inline)) {
+                const unsigned keep = e.mask & laterThan(node, p) & ~exceeding;
+                const unsigned nodes = nodeLanes(node);
+                // Items are rare (a few pairs per item against tens of nodes tested): a
+                // branch.
+                for (unsigned items = keep & ~nodes; items != 0; items &= items - 1)
+                    visit(order_[p], order_[node.child[__builtin_ctz(items)] & ~kItem]);
+                return appendLanes(node, keep & nodes, children);
+            });
 }
 
 } // namespace hlod

@@ -141,8 +141,7 @@ template <class V> [[gnu::always_inline]] inline V vmin(V a, V b) { return a < b
 #if defined(__SSE2__)
     return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(above)));
 #else
-    return static_cast<unsigned>((above[0] & 1) | (above[1] & 2) | (above[2] & 4) |
-                                 (above[3] & 8));
+    return static_cast<unsigned>((above[0] & 1) | (above[1] & 2) | (above[2] & 4) | (above[3] & 8));
 #endif
 }
 
@@ -195,6 +194,28 @@ namespace wide {
 //   rejects (its rounding near the top of the range is not covered). Below that, a left side
 //   that overflows to infinity has an exact value above 3.4e38, so rejecting is right; an
 //   underflow only lowers the left side; a NaN compares false (kept).
+// A query region's values, each broadcast to every lane of a vector V (`splat`: a float to a
+// V), so that a node test reads them as vector operands instead of broadcasting each again.
+template <class V> struct QueryLanes {
+    template <class Splat>
+    QueryLanes(const PackedRegion& r, const PackedExtra& e, Splat splat)
+        : maxFv(splat(r.maxFv)), minSize(splat(r.minSize)) {
+        for (int i = 0; i < 3; ++i) {
+            lo[i] = splat(r.lo[i]);
+            hi[i] = splat(r.hi[i]);
+            minExtent[i] = splat(e.minExtent[i]);
+            minArea[i] = splat(e.minArea[i]);
+        }
+    }
+    V lo[3], hi[3], minExtent[3], minArea[3];
+    V maxFv, minSize;
+};
+
+// Stands in for a member a query kind does not use.
+struct Nothing {
+    template <class... Args> explicit Nothing(const Args&...) {}
+};
+
 struct SingleThreshold {
     explicit SingleThreshold(double threshold)
         : value(static_cast<float>(threshold / kSafety)),
@@ -218,38 +239,31 @@ template <int N> class SingleBoxK0 {
     using Vi = std::conditional_t<N == 4, I4, I8>;
 
 public:
-    SingleBoxK0(const PackedRegion& r, const PackedExtra& e) {
-        for (int i = 0; i < 3; ++i) {
-            lo_[i] = splat(r.lo[i]);
-            hi_[i] = splat(r.hi[i]);
-            minExtent_[i] = splat(e.minExtent[i]);
-            minArea_[i] = splat(e.minArea[i]);
-        }
-        maxFv_ = splat(r.maxFv);
-        minSize_ = splat(r.minSize);
-    }
+    SingleBoxK0(const PackedRegion& r, const PackedExtra& e)
+        : q_(r, e, [](float x) { return splat(x); }) {}
 
     // Bit l set when lane l's pair bound certainly exceeds `t` (the threshold, singleUsable):
     // lanes 0-3 of node a, for N = 8 lanes 4-7 those of node b (N = 4 ignores b).
     [[gnu::always_inline]] unsigned exceeds(const WideRegions& a, const WideRegions& b,
                                             const SingleThreshold& t) const {
-        const Vf fvSum = vmax(maxFv_ + loadLanes(a.maxFv, b.maxFv), splat(t.minFvSum));
+        const Vf fvSum = vmax(q_.maxFv + loadLanes(a.maxFv, b.maxFv), splat(t.minFvSum));
         Vf e[3];
         Vf area[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            const Vf gap =
-                vmax(loadLanes(a.lo[i], b.lo[i]) - hi_[i], lo_[i] - loadLanes(a.hi[i], b.hi[i]));
+            const Vf gap = vmax(loadLanes(a.lo[i], b.lo[i]) - q_.hi[i],
+                                q_.lo[i] - loadLanes(a.hi[i], b.hi[i]));
             const Vf wb = loadLanes(a.minExtent[i], b.minExtent[i]);
-            e[i] = vmax(vmax(minExtent_[i], wb), gap + (minExtent_[i] + wb));
-            area[i] = vmax(minArea_[i], loadLanes(a.minArea[i], b.minArea[i]));
+            e[i] = vmax(vmax(q_.minExtent[i], wb), gap + (q_.minExtent[i] + wb));
+            area[i] = vmax(q_.minArea[i], loadLanes(a.minArea[i], b.minArea[i]));
         }
         const Vf vx = e[0] * vmax(area[0], e[1] * e[2]);
         const Vf vy = e[1] * vmax(area[1], e[0] * e[2]);
         const Vf vz = e[2] * vmax(area[2], e[0] * e[1]);
         // (The maxima paired so that the chain from the loads to the verdict stays short: the
         // processor overlaps the tests of a wave as far as their latency allows.)
-        const Vf v = vmax(vmax(vx, vy), vmax(vz, vmax(minSize_, loadLanes(a.minSize, b.minSize))));
+        const Vf v =
+            vmax(vmax(vx, vy), vmax(vz, vmax(q_.minSize, loadLanes(a.minSize, b.minSize))));
         const Vf rhs = splat(t.value) * fvSum;
         return bits((v * vmax(fvSum, v) > rhs) & (rhs < splat(1e37f)));
     }
@@ -291,12 +305,7 @@ private:
         }
     }
 
-    Vf lo_[3], hi_[3], minExtent_[3], minArea_[3];
-    Vf maxFv_, minSize_;
-};
-
-struct NoSingle {
-    NoSingle(const PackedRegion&, const PackedExtra&) {}
+    QueryLanes<Vf> q_;
 };
 
 } // namespace wide
@@ -304,8 +313,7 @@ struct NoSingle {
 // One query region against wide nodes, for one cost model (sphere, or box with its k), W lanes
 // per vector (2 or 4, see the header). Every member is inlined into its caller, so the
 // caller's target decides the instructions. A fixed kind K must be the model's
-// (boundKindOf); Any works for every model. The query's values are kept broadcast to every
-// lane, so a node test reads them as vector operands instead of broadcasting each again.
+// (boundKindOf); Any works for every model.
 template <int W, BoundKind K = BoundKind::Any> class WideQueryT {
     using L = wide::Lanes<W>;
     using Vd = typename L::Vd;
@@ -313,17 +321,8 @@ template <int W, BoundKind K = BoundKind::Any> class WideQueryT {
 
 public:
     WideQueryT(const CostModel& model, const PackedRegion& r, const PackedExtra& e)
-        : single_(r, e), k_(model.k()), sphere_(model.volume() == VolumeType::Sphere) {
-        if constexpr (K == BoundKind::BoxK0Single) return; // tests in single_ only
-        for (int i = 0; i < 3; ++i) {
-            lo_[i] = splat(r.lo[i]);
-            hi_[i] = splat(r.hi[i]);
-            minExtent_[i] = splat(e.minExtent[i]);
-            minArea_[i] = splat(e.minArea[i]);
-        }
-        maxFv_ = splat(r.maxFv);
-        minSize_ = splat(r.minSize);
-    }
+        : single_(r, e), q_(r, e, [](float x) { return splat(x); }), k_(model.k()),
+          sphere_(model.volume() == VolumeType::Sphere) {}
 
     // Bit l set when lane l's pair bound exceeds `threshold`.
     // (BoxK0Single: when the bound certainly exceeds it, wide::SingleBoxK0.)
@@ -389,7 +388,7 @@ private:
             out |= coupled * splat(kSafety) > rhs;
             const Vd shape = vmax(minUb, hi);
             out |= kIs(1.0) ? t.lhs * shape > rhs * minUb
-                             : t.lhs * (shape * shape) > rhs * (minUb * minUb);
+                            : t.lhs * (shape * shape) > rhs * (minUb * minUb);
             return bits(out);
         }
         unsigned result = bits(out);
@@ -420,8 +419,7 @@ private:
                 using wide::vmin;
                 const Vd mid = vmax(vmin(t.e[0], t.e[1]), vmin(vmax(t.e[0], t.e[1]), t.e[2]));
                 const Vd p = hi * hi * mid;
-                const Vd coupled =
-                    kIs(1.0) ? p * vmax(splat(1.0), t.v / t.fvSum) : p * p / t.fvSum;
+                const Vd coupled = kIs(1.0) ? p * vmax(splat(1.0), t.v / t.fvSum) : p * p / t.fvSum;
                 const Vd separate = kIs(1.0) ? bound * ratio : bound * (ratio * ratio);
                 bound = vmax(separate, coupled * splat(kSafety));
             } else {
@@ -440,11 +438,11 @@ private:
     [[gnu::always_inline]] Terms terms(const WideRegions& w, int at) const {
         using wide::vmax;
         Terms t;
-        t.fvSum = maxFv_ + load(w.maxFv + at);
+        t.fvSum = q_.maxFv + load(w.maxFv + at);
         Vd gap[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            gap[i] = vmax(load(w.lo[i] + at) - hi_[i], lo_[i] - load(w.hi[i] + at));
+            gap[i] = vmax(load(w.lo[i] + at) - q_.hi[i], q_.lo[i] - load(w.hi[i] + at));
         }
         if (sphere()) {
             const Vd zero = splat(0.0);
@@ -453,7 +451,7 @@ private:
             Vd d = d2;
             for (int l = 0; l < W; ++l)
                 d[l] = std::sqrt(d2[l]);
-            const Vd ra = minSize_, rb = load(w.minSize + at);
+            const Vd ra = q_.minSize, rb = load(w.minSize + at);
             const Vd r = vmax(vmax(ra, rb), (d + ra + rb) * splat(0.5));
             const Vd r3 = r * r * r;
             t.lhs = r3 * vmax(t.fvSum, splat(kSphereVolume) * r3) * splat(kSafety);
@@ -462,14 +460,14 @@ private:
         Vd area[3];
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            const Vd wa = minExtent_[i], wb = load(w.minExtent[i] + at);
+            const Vd wa = q_.minExtent[i], wb = load(w.minExtent[i] + at);
             t.e[i] = vmax(vmax(wa, wb), gap[i] + (wa + wb));
-            area[i] = vmax(minArea_[i], load(w.minArea[i] + at));
+            area[i] = vmax(q_.minArea[i], load(w.minArea[i] + at));
         }
         const Vd vx = t.e[0] * vmax(area[0], t.e[1] * t.e[2]);
         const Vd vy = t.e[1] * vmax(area[1], t.e[0] * t.e[2]);
         const Vd vz = t.e[2] * vmax(area[2], t.e[0] * t.e[1]);
-        t.v = vmax(vmax(vx, vmax(vy, vz)), vmax(minSize_, load(w.minSize + at)));
+        t.v = vmax(vmax(vx, vmax(vy, vz)), vmax(q_.minSize, load(w.minSize + at)));
         t.lhs = t.v * vmax(t.fvSum, t.v) * splat(kSafety);
         return t;
     }
@@ -481,7 +479,8 @@ private:
         Vd out = splat(std::numeric_limits<double>::max());
 #pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) {
-            out = vmin(out, vmax(hi_[i], load(w.hi[i] + at)) - vmin(lo_[i], load(w.lo[i] + at)));
+            out =
+                vmin(out, vmax(q_.hi[i], load(w.hi[i] + at)) - vmin(q_.lo[i], load(w.lo[i] + at)));
         }
         return out;
     }
@@ -499,11 +498,13 @@ private:
     }
 
     // (Two nodes per vector where W = 4, AVX2; one node per 128-bit vector otherwise.)
+    // (BoxK0Single tests in single_ only; the other kinds in q_.)
     [[no_unique_address]] std::conditional_t<K == BoundKind::BoxK0Single,
-                                             wide::SingleBoxK0<W == 4 ? 8 : 4>, wide::NoSingle>
+                                             wide::SingleBoxK0<W == 4 ? 8 : 4>, wide::Nothing>
         single_;
-    Vd lo_[3], hi_[3], minExtent_[3], minArea_[3]; // the query's values in every lane
-    Vd maxFv_, minSize_;
+    [[no_unique_address]] std::conditional_t<K == BoundKind::BoxK0Single, wide::Nothing,
+                                             wide::QueryLanes<Vd>>
+        q_;
     double k_;
     bool sphere_;
 };

@@ -70,6 +70,15 @@ double cost(const CostModel& m, const std::vector<ClusterUnit>& u, std::size_t i
     return i < j ? m.mergeCost(u[i], u[j]) : m.mergeCost(u[j], u[i]);
 }
 
+// The region of `count` units drawn at random (with repetition) from `units`.
+Region unionOf(const CostModel& m, const std::vector<ClusterUnit>& units, std::size_t count,
+               std::mt19937_64& rng) {
+    Region r = emptyRegion();
+    for (std::size_t c = 0; c < count; ++c)
+        includeRegion(r, regionOf(m, units[rng() % units.size()]));
+    return r;
+}
+
 // The query compiled for the model's bound kind (what MergeBvh runs) answers as the generic
 // one (K = Any) that the test below checks against the scalar test: same verdicts, same bounds.
 template <int W, BoundKind K>
@@ -90,12 +99,21 @@ template <int W>
 void expectModelKindAsAny(const CostModel& m, const PackedRegion& qr, const PackedExtra& qe,
                           const WideRegions& w, double threshold) {
     switch (boundKindOf(m)) {
-    case BoundKind::Sphere: expectKindAsAny<W, BoundKind::Sphere>(m, qr, qe, w, threshold); break;
-    case BoundKind::BoxK0: expectKindAsAny<W, BoundKind::BoxK0>(m, qr, qe, w, threshold); break;
-    case BoundKind::BoxK1: expectKindAsAny<W, BoundKind::BoxK1>(m, qr, qe, w, threshold); break;
-    case BoundKind::BoxK2: expectKindAsAny<W, BoundKind::BoxK2>(m, qr, qe, w, threshold); break;
+    case BoundKind::Sphere:
+        expectKindAsAny<W, BoundKind::Sphere>(m, qr, qe, w, threshold);
+        break;
+    case BoundKind::BoxK0:
+        expectKindAsAny<W, BoundKind::BoxK0>(m, qr, qe, w, threshold);
+        break;
+    case BoundKind::BoxK1:
+        expectKindAsAny<W, BoundKind::BoxK1>(m, qr, qe, w, threshold);
+        break;
+    case BoundKind::BoxK2:
+        expectKindAsAny<W, BoundKind::BoxK2>(m, qr, qe, w, threshold);
+        break;
     case BoundKind::Any:
-    case BoundKind::BoxK0Single: break;
+    case BoundKind::BoxK0Single:
+        break;
     }
 }
 
@@ -116,13 +134,7 @@ TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
         const std::vector<ClusterUnit> units = randomUnits(m, 400, 30.0, 9);
         for (int round = 0; round < 300; ++round) {
             // A query region (one unit or the union of a few) against four slot regions.
-            auto region = [&](std::size_t count) {
-                Region r = emptyRegion();
-                for (std::size_t c = 0; c < count; ++c) {
-                    includeRegion(r, regionOf(m, units[rng() % units.size()]));
-                }
-                return r;
-            };
+            auto region = [&](std::size_t count) { return unionOf(m, units, count, rng); };
             PackedRegion qr{};
             PackedExtra qe{};
             packRegion(region(1 + rng() % 3), boxModel, qr, qe);
@@ -182,12 +194,7 @@ TEST(MergeBvh, SingleK0TestIsTheDoubleTestWithAMargin) {
             u.fv *= scale * scale * scale;
         }
         for (int round = 0; round < 400; ++round) {
-            auto region = [&](std::size_t count) {
-                Region r = emptyRegion();
-                for (std::size_t c = 0; c < count; ++c)
-                    includeRegion(r, regionOf(m, units[rng() % units.size()]));
-                return r;
-            };
+            auto region = [&](std::size_t count) { return unionOf(m, units, count, rng); };
             PackedRegion qr{};
             PackedExtra qe{};
             packRegion(region(1 + rng() % 3), true, qr, qe);
