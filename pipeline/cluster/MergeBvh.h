@@ -142,30 +142,6 @@ private:
         joinWith<4, K>(threshold, visit);
     }
 #endif
-    // Calls f(std::integral_constant<BoundKind, kind>{}): one instantiation per kind.
-    template <class F> static void withKind(BoundKind kind, F&& f) {
-        using enum BoundKind;
-        switch (kind) {
-        case Any:
-            f(std::integral_constant<BoundKind, Any>{});
-            return;
-        case Sphere:
-            f(std::integral_constant<BoundKind, Sphere>{});
-            return;
-        case BoxK0:
-            f(std::integral_constant<BoundKind, BoxK0>{});
-            return;
-        case BoxK1:
-            f(std::integral_constant<BoundKind, BoxK1>{});
-            return;
-        case BoxK2:
-            f(std::integral_constant<BoundKind, BoxK2>{});
-            return;
-        case BoxK0Single:
-            f(std::integral_constant<BoundKind, BoxK0Single>{});
-            return;
-        }
-    }
     // Entries of one breadth-first wave, with room for what the next wave may add (at most
     // four per entry tested), written without a branch per entry.
     class Wave {

@@ -161,6 +161,16 @@ inline BoundKind boundKindOf(const CostModel& model) {
     return BoundKind::Any;
 }
 
+// Calls f(std::integral_constant<BoundKind, kind>{}), so that f can instantiate code for the
+// kind known at run time (one instantiation per kind).
+template <class F> void withKind(BoundKind kind, F&& f) {
+    using enum BoundKind;
+    const auto tryKinds = [&]<BoundKind... Ks>() {
+        ((kind == Ks ? (f(std::integral_constant<BoundKind, Ks>{}), true) : false) || ...);
+    };
+    tryKinds.template operator()<Any, Sphere, BoxK0, BoxK1, BoxK2, BoxK0Single>();
+}
+
 // Whether the single-precision k = 0 test (BoundKind::BoxK0Single) runs at `threshold`: the
 // threshold and what it is compared with stay in single precision's normal range.
 // (Beyond 1e-15..1e15 squared volumes near the threshold would leave single precision's range

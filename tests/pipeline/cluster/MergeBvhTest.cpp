@@ -98,23 +98,12 @@ void expectKindAsAny(const CostModel& m, const PackedRegion& qr, const PackedExt
 template <int W>
 void expectModelKindAsAny(const CostModel& m, const PackedRegion& qr, const PackedExtra& qe,
                           const WideRegions& w, double threshold) {
-    switch (boundKindOf(m)) {
-    case BoundKind::Sphere:
-        expectKindAsAny<W, BoundKind::Sphere>(m, qr, qe, w, threshold);
-        break;
-    case BoundKind::BoxK0:
-        expectKindAsAny<W, BoundKind::BoxK0>(m, qr, qe, w, threshold);
-        break;
-    case BoundKind::BoxK1:
-        expectKindAsAny<W, BoundKind::BoxK1>(m, qr, qe, w, threshold);
-        break;
-    case BoundKind::BoxK2:
-        expectKindAsAny<W, BoundKind::BoxK2>(m, qr, qe, w, threshold);
-        break;
-    case BoundKind::Any:
-    case BoundKind::BoxK0Single:
-        break;
-    }
+    withKind(boundKindOf(m), [&](auto kind) {
+        // (Any is what the fixed kinds are compared with.)
+        if constexpr (kind.value != BoundKind::Any && kind.value != BoundKind::BoxK0Single) {
+            expectKindAsAny<W, kind.value>(m, qr, qe, w, threshold);
+        }
+    });
 }
 
 TEST(MergeBvh, BoundKindOfNamesTheModel) {
