@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "pipeline/cluster/MergeBvh.h"
+#include "pipeline/cluster/Morton.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -58,44 +59,22 @@ struct Group {
     bool alive = true;
 };
 
-// Spreads the low 21 bits of x to every third bit (Morton code interleave).
-std::uint64_t spreadBits(std::uint64_t x) {
-    x &= 0x1fffffu;
-    x = (x | x << 32) & 0x1f00000000ffffu;
-    x = (x | x << 16) & 0x1f0000ff0000ffu;
-    x = (x | x << 8) & 0x100f00f00f00f00fu;
-    x = (x | x << 4) & 0x10c30c30c30c30c3u;
-    x = (x | x << 2) & 0x1249249249249249u;
-    return x;
-}
-
-// Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres, ties by position,
-// into `order`.
+// Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres (Morton.h), ties by
+// position, into `order`.
 void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
-                  std::vector<std::uint32_t>& order) {
+                  std::vector<std::uint32_t>& order, std::vector<std::uint64_t>& codes) {
     const std::size_t n = units.size();
     const bool box = builder.model().volume() == VolumeType::Aabb;
-    auto centre = [&](std::size_t i) {
-        const ClusterUnit& u = builder.unit(units[i]);
-        return box ? u.box.center() : u.sphere.center;
-    };
-    Aabb all;
-    for (std::size_t i = 0; i < n; ++i)
-        all.expand(centre(i));
-    constexpr double kCells = double((1u << 21) - 1);
-    const glm::dvec3 extent = glm::max(all.max - all.min, glm::dvec3(1e-300));
-    const glm::dvec3 scale = glm::dvec3(kCells) / extent;
-    // Cell index along one axis, clamped (a NaN lands in cell 0: the order is only a layout).
-    auto cell = [&](double x) -> std::uint64_t {
-        return x >= 0.0 ? static_cast<std::uint64_t>(std::min(x, kCells)) : 0u;
-    };
+    mortonCodes(
+        n,
+        [&](std::size_t i) {
+            const ClusterUnit& u = builder.unit(units[i]);
+            return box ? u.box.center() : u.sphere.center;
+        },
+        codes);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const glm::dvec3 q = (centre(i) - all.min) * scale;
-        const std::uint64_t code =
-            spreadBits(cell(q.x)) | spreadBits(cell(q.y)) << 1 | spreadBits(cell(q.z)) << 2;
-        keyed[i] = {code, i};
-    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        keyed[i] = {codes[i], i};
     std::sort(keyed.begin(), keyed.end());
     order.resize(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -129,7 +108,7 @@ public:
     // ever compares ids, so the numbering changes no result.
     void start(const std::vector<Id>& units) {
         const std::size_t n = units.size();
-        spatialOrder(builder_, units, positionOf_);
+        spatialOrder(builder_, units, positionOf_, codes_);
         units_.resize(n);
         internalOf_.resize(n);
         groupOf_.resize(n);
@@ -453,6 +432,7 @@ private:
     std::vector<Id> units_;                 // internal index -> unit id (spatial order)
     std::vector<std::uint32_t> internalOf_; // position in ascending id -> internal index
     std::vector<std::uint32_t> positionOf_; // internal index -> position in ascending id
+    std::vector<std::uint64_t> codes_;      // spatialOrder's scratch
     std::uint32_t cap_;
     std::size_t k_; // neighbours kept per unit (rule step 3)
     MergeBvh::Simd simd_;

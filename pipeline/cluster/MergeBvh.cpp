@@ -1,4 +1,4 @@
-// 4-wide median-split BVH for best-partner queries and the self-join (see MergeBvh.h).
+// 4-wide BVH in Morton order for best-partner queries and the self-join (see MergeBvh.h).
 #include "pipeline/cluster/MergeBvh.h"
 
 #include <algorithm>
@@ -6,6 +6,7 @@
 #include <bit>
 #include <numeric>
 
+#include "pipeline/cluster/Morton.h"
 #include "pipeline/scene/Aabb.h"
 
 namespace hlod {
@@ -32,18 +33,27 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     packedExtra_.assign(n, PackedExtra{});
     if (n == 0) return;
     nodes_.reserve(n / 2 + 16);
-    std::vector<glm::dvec3>& centers = centers_;
-    centers.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        centers[i] = items[i].box.center();
+    std::vector<std::uint64_t>& codes = codes_;
+    mortonCodes(
+        n, [&](std::size_t i) { return items[i].box.center(); }, codes);
     groupByClass(sizeClass);
+    keys_.resize(n);
     std::vector<Slot> tops;
     std::uint32_t begin = 0;
     while (begin < n) {
         std::uint32_t end = begin + 1;
         while (end < n && sizeClass[order_[end]] == sizeClass[order_[begin]])
             ++end;
-        tops.push_back(buildRange(begin, end, items, centers));
+        // The class in Morton order, ties by item (a level's items come in that order
+        // already: then only the check runs).
+        const auto byCode = [&](std::uint32_t a, std::uint32_t b) {
+            return codes[a] < codes[b] || (codes[a] == codes[b] && a < b);
+        };
+        if (!std::is_sorted(order_.begin() + begin, order_.begin() + end, byCode))
+            std::sort(order_.begin() + begin, order_.begin() + end, byCode);
+        for (std::uint32_t p = begin; p < end; ++p)
+            keys_[p] = codes[order_[p]];
+        tops.push_back(buildRange(begin, end, items));
         begin = end;
     }
     // The class hierarchies under one top, four slots per node in class order.
@@ -82,51 +92,38 @@ void MergeBvh::groupByClass(const std::vector<int>& sizeClass) {
     });
 }
 
-std::uint32_t MergeBvh::medianSplit(std::uint32_t begin, std::uint32_t end,
-                                    const std::vector<glm::dvec3>& centers) {
-    Aabb centerBox;
-    for (std::uint32_t i = begin; i < end; ++i)
-        centerBox.expand(centers[order_[i]]);
-    const glm::dvec3 e = centerBox.extent();
-    const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
-    const std::uint32_t mid = begin + (end - begin) / 2;
-    // The keys are gathered once as 64-bit integers (the centre coordinate rounded to a float
-    // in the high half, mapped so that integer order is float order; the item in the low half,
-    // which breaks ties so the shape is a pure function of the input): the selection then
-    // compares contiguous integers instead of loading two scattered centres per comparison.
-    // (Rounding only decides which side of the median equal-looking centres fall: any split
-    // gives the same answers, MergeBvh.h.)
-    std::vector<std::uint64_t>& keyed = splitKeys_;
-    keyed.resize(end - begin);
-    for (std::uint32_t i = begin; i < end; ++i) {
-        const auto bits =
-            std::bit_cast<std::uint32_t>(static_cast<float>(centers[order_[i]][axis]));
-        const std::uint32_t ordered = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
-        keyed[i - begin] = std::uint64_t{ordered} << 32 | order_[i];
-    }
-    std::nth_element(keyed.begin(), keyed.begin() + (mid - begin), keyed.end());
-    for (std::uint32_t i = begin; i < end; ++i)
-        order_[i] = static_cast<std::uint32_t>(keyed[i - begin]);
-    return mid;
+std::uint32_t MergeBvh::split(std::uint32_t begin, std::uint32_t end) const {
+    // keys_[begin, end) ascending, end - begin >= 2. They share the bits above the highest one
+    // in which the first and last differ: the range splits where that bit turns on.
+    const std::uint64_t first = keys_[begin];
+    const std::uint64_t last = keys_[end - 1];
+    if (first == last) return begin + (end - begin) / 2;
+    const std::uint64_t bit = std::uint64_t{1} << (63 - std::countl_zero(first ^ last));
+    const auto at = std::partition_point(keys_.begin() + begin, keys_.begin() + end,
+                                         [&](std::uint64_t key) { return (key & bit) == 0; });
+    return static_cast<std::uint32_t>(at - keys_.begin());
 }
 
 MergeBvh::Slot MergeBvh::buildRange(std::uint32_t begin, std::uint32_t end,
-                                    const std::vector<Region>& items,
-                                    const std::vector<glm::dvec3>& centers) {
+                                    const std::vector<Region>& items) {
     if (end - begin == 1) return Slot{kItem | begin, end, items[order_[begin]]};
+    // Up to four parts: the two halves of split(), each split again if it holds two items or
+    // more (a half of one item stays one part).
     std::array<std::uint32_t, 5> cut{begin, begin + 1, begin + 2, begin + 3, end};
-    std::size_t count = end - begin; // parts
+    std::size_t count = end - begin;
     if (count > 4) {
-        count = 4;
-        cut[2] = medianSplit(begin, end, centers);
-        cut[1] = medianSplit(begin, cut[2], centers);
-        cut[3] = medianSplit(cut[2], end, centers);
+        const std::uint32_t mid = split(begin, end);
+        count = 0;
+        for (const auto& [lo, hi] : {std::pair{begin, mid}, std::pair{mid, end}}) {
+            if (hi - lo >= 2) cut[++count] = split(lo, hi);
+            cut[++count] = hi;
+        }
     } else {
         cut[count] = end;
     }
     std::array<Slot, 4> parts;
     for (std::size_t i = 0; i < count; ++i)
-        parts[i] = buildRange(cut[i], cut[i + 1], items, centers);
+        parts[i] = buildRange(cut[i], cut[i + 1], items);
     return makeNode(parts.data(), count);
 }
 

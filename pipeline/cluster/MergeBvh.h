@@ -3,11 +3,20 @@
 //
 // A 4-wide BVH: every node has four slots, each holding either one item or a child node, and
 // keeps the four slots' regions side by side (WideBounds.h), so one node test bounds the cost
-// against all four at once in SIMD lanes, without a branch per slot. Built top-down like the
-// classic median-split BVH (e.g. Ericson, "Real-Time Collision Detection", 6.2), two median
-// splits per node (the longest axis of the centroids, then each half's longest axis): a
-// range of five or more items becomes four parts, a range of two to four items a node of item
-// slots. Wide nodes (as in Embree's BVH4) halve the depth and replace the branchy node-by-node
+// against all four at once in SIMD lanes, without a branch per slot. Built top-down from the
+// Morton order of the items' centres (Morton.h), as the radix-tree builders of Karras
+// ("Maximizing parallelism in the construction of BVHs, octrees, and k-d trees", HPG 2012) do:
+// a range of items sorted by code splits where the highest bit in which its first and last
+// codes differ turns on, which is the plane between two octree cells, and a range of equal
+// codes in the middle. Two splits per node (each half split again unless it is one item): a
+// range of five or more items becomes up to four parts, a range of two to four items a node
+// of item slots. A level's units come in Morton order already (LevelMerger.cpp), so the build
+// is a binary search per split and linear in the items, where median splits along the longest
+// axis (the classic top-down build, Ericson, "Real-Time Collision Detection", 6.2) selected a
+// median over every range, three times per node; the octree planes also never put far apart
+// items under one node as splits of the curve at equal counts do. Measured against the median
+// build, the self-join tests as few nodes or fewer (docs/benchmarks.md).
+// Wide nodes (as in Embree's BVH4) halve the depth and replace the branchy node-by-node
 // recursion of a binary tree by one vector test per node. The queries exist twice: for the
 // baseline target (two lanes per SSE2 vector) and compiled for AVX2 (four lanes per vector,
 // a third fewer instructions), picked at run time from what the processor has.
@@ -264,11 +273,9 @@ private:
     [[gnu::always_inline]] WideQueryT<W, K> queryOf(std::uint32_t position) const {
         return WideQueryT<W, K>(*model_, packed_[position], packedExtra_[position]);
     }
-    Slot buildRange(std::uint32_t begin, std::uint32_t end, const std::vector<Region>& items,
-                    const std::vector<glm::dvec3>& centers);
+    Slot buildRange(std::uint32_t begin, std::uint32_t end, const std::vector<Region>& items);
     Slot makeNode(const Slot* parts, std::size_t count);
-    std::uint32_t medianSplit(std::uint32_t begin, std::uint32_t end,
-                              const std::vector<glm::dvec3>& centers);
+    std::uint32_t split(std::uint32_t begin, std::uint32_t end) const;
     void groupByClass(const std::vector<int>& sizeClass);
 
     const CostModel* model_ = nullptr;
@@ -282,15 +289,18 @@ private:
     std::vector<PackedRegion> packed_;     // by position
     std::vector<PackedExtra> packedExtra_; // by position (box model)
     // Build scratch, kept so that rebuilding level after level reuses the memory.
-    std::vector<glm::dvec3> centers_;
+    std::vector<std::uint64_t> codes_; // by item
+    std::vector<std::uint64_t> keys_;  // by position: the item's code
     std::vector<std::uint32_t> classStart_;
-    std::vector<std::uint64_t> splitKeys_;
 };
 
-// Depth: median splits into four make a class hierarchy at most 17 levels deep (log4 of 2^32
-// items, plus the item) and the tops above them add log4 of the class count (at most 6 for
-// the 2,100 binary exponents of a double), so a descent's stack (at most four slots pushed per
-// node popped) fits in 128 entries. (The join walks breadth first, in growing buffers.)
+// Depth: along a path from a class hierarchy's top each split lowers the highest bit in which
+// the range's codes differ (63 bits) or, once they are equal, halves the range (at most 32
+// times below 2^32 items); a node makes two splits of the path, so a class hierarchy is at
+// most 49 nodes deep with the item, and the tops above add log4 of the class count (at most
+// 6 for the 2,100 binary exponents of a double). A descent's stack holds at most three
+// pending slots per level above the node popped and its four, so 3 * 55 + 4 < 256 entries.
+// (The join walks breadth first, in growing buffers.)
 template <class Visit>
 void MergeBvh::search(std::uint32_t self, const double& threshold, Visit&& visit, Simd simd) const {
     withKind(kind_, [&](auto kind) {
@@ -316,7 +326,7 @@ inline void MergeBvh::searchWith(std::uint32_t self, const double& threshold, Vi
         std::uint32_t node;
         double lb;
     };
-    std::array<Pending, 128> stack;
+    std::array<Pending, 256> stack;
     std::size_t top = 0;
     stack[top++] = Pending{root_, 0.0};
     while (top > 0) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -231,64 +232,113 @@ TEST(MergeBvh, SingleK0TestIsTheDoubleTestWithAMargin) {
     EXPECT_GT(rejected, 1000u);
 }
 
+// The threshold near the 5th percentile pair cost of `units`, so some pairs are in and most
+// are out.
+double lowPairCost(const CostModel& m, const std::vector<ClusterUnit>& units) {
+    std::vector<double> costs;
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        for (std::size_t j = i + 1; j < units.size(); ++j)
+            costs.push_back(cost(m, units, i, j));
+    }
+    std::sort(costs.begin(), costs.end());
+    return costs.empty() ? 1.0 : costs[costs.size() / 20];
+}
+
+// The join over `units` reports each pair within `threshold` once, nothing its item test
+// rejects, the same pairs with every vector width, and if `prunes` (and there are enough
+// units) not every pair; returns how many pairs are within.
+std::size_t expectJoinFindsThePairs(const CostModel& m, const std::vector<ClusterUnit>& units,
+                                    double threshold, const std::string& what, bool prunes = true) {
+    const bool boxModel = m.volume() == VolumeType::Aabb;
+    const auto n = static_cast<std::uint32_t>(units.size());
+    const MergeBvh bvh = buildOver(m, units);
+    std::multiset<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (MergeBvh::Simd simd : simds()) {
+        std::multiset<std::pair<std::uint32_t, std::uint32_t>> pairs;
+        bvh.join(
+            threshold,
+            [&](std::uint32_t i, std::uint32_t j) {
+                EXPECT_NE(i, j);
+                pairs.emplace(std::min(i, j), std::max(i, j));
+            },
+            simd);
+        if (simd != MergeBvh::Simd::Baseline) {
+            EXPECT_EQ(pairs, seen) << what << ": the " << nameOf(simd) << " join differs";
+        }
+        seen = std::move(pairs);
+    }
+    // The k = 0 join tests in single precision (WideBounds.h), which may keep a pair whose
+    // bound exceeds the threshold by less than its margin (1 - 2^-12), never one above that.
+    const double margin = boundKindOf(m) == BoundKind::BoxK0 ? 1.0 + 1e-3 : 1.0;
+    const PackedPairTest test(m, threshold * margin);
+    std::size_t within = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t j = i + 1; j < n; ++j) {
+            const std::size_t count = seen.count({i, j});
+            EXPECT_LE(count, 1u) << what << ": pair " << i << "," << j << " reported twice";
+            if (cost(m, units, i, j) <= threshold) {
+                ++within;
+                EXPECT_EQ(count, 1u) << what << " misses pair " << i << "," << j;
+            }
+            if (count == 1) {
+                PackedRegion a{}, b{};
+                PackedExtra ae{}, be{};
+                packRegion(regionOf(m, units[i]), boxModel, a, ae);
+                packRegion(regionOf(m, units[j]), boxModel, b, be);
+                EXPECT_FALSE(test.exceeds(PackedRef{&a, boxModel ? &ae : nullptr},
+                                          PackedRef{&b, boxModel ? &be : nullptr}))
+                    << what;
+            }
+        }
+    }
+    if (prunes && n >= 17) {
+        EXPECT_LT(seen.size(), n * (n - 1) / 2) << what << ": nothing was pruned";
+    }
+    return within;
+}
+
+// The search finds the cheapest partner of every `stride`-th unit with every vector width and,
+// if `prunes`, without visiting everything.
+void expectSearchFindsTheCheapest(const CostModel& m, const std::vector<ClusterUnit>& units,
+                                  std::uint32_t stride, const std::string& what,
+                                  bool prunes = true) {
+    const MergeBvh bvh = buildOver(m, units);
+    for (std::uint32_t u = 0; u < units.size(); u += stride) {
+        double expected = std::numeric_limits<double>::infinity();
+        for (std::uint32_t v = 0; v < units.size(); ++v) {
+            if (v != u) expected = std::min(expected, cost(m, units, u, v));
+        }
+        for (MergeBvh::Simd simd : simds()) {
+            double best = std::numeric_limits<double>::infinity();
+            std::size_t visited = 0;
+            bvh.search(
+                u, best,
+                [&](std::uint32_t v) {
+                    ++visited;
+                    if (v != u) best = std::min(best, cost(m, units, u, v));
+                },
+                simd);
+            EXPECT_EQ(best, expected) << what << " " << nameOf(simd);
+            if (prunes) {
+                EXPECT_LT(visited, units.size()) << what << ": the search visited everything";
+            }
+        }
+    }
+}
+
+std::string nameOf(const Model& model) {
+    return std::string(toString(model.volume)) + " k=" + std::to_string(model.k).substr(0, 3);
+}
+
 TEST(MergeBvh, JoinReportsEveryPairWithinTheThresholdOnce) {
     for (const Model& model : kModels) {
         const CostModel m(model.volume, model.k);
-        const bool boxModel = model.volume == VolumeType::Aabb;
         for (std::size_t n : {1u, 2u, 5u, 17u, 300u}) {
             const std::vector<ClusterUnit> units = randomUnits(m, n, 40.0, 20 + n);
-            const MergeBvh bvh = buildOver(m, units);
-            // A threshold near the median pair cost, so some pairs are in and most are out.
-            std::vector<double> costs;
-            for (std::size_t i = 0; i < n; ++i) {
-                for (std::size_t j = i + 1; j < n; ++j)
-                    costs.push_back(cost(m, units, i, j));
-            }
-            std::sort(costs.begin(), costs.end());
-            const double threshold = costs.empty() ? 1.0 : costs[costs.size() / 20];
-            std::multiset<std::pair<std::uint32_t, std::uint32_t>> seen;
-            for (MergeBvh::Simd simd : simds()) {
-                std::multiset<std::pair<std::uint32_t, std::uint32_t>> pairs;
-                bvh.join(
-                    threshold,
-                    [&](std::uint32_t i, std::uint32_t j) {
-                        EXPECT_NE(i, j);
-                        pairs.emplace(std::min(i, j), std::max(i, j));
-                    },
-                    simd);
-                if (simd != MergeBvh::Simd::Baseline) {
-                    EXPECT_EQ(pairs, seen) << "the " << nameOf(simd) << " join differs";
-                }
-                seen = std::move(pairs);
-            }
-            // The k = 0 join tests in single precision (WideBounds.h), which may keep a pair
-            // whose bound exceeds the threshold by less than its margin (1 - 2^-12), never
-            // one above that.
-            const double margin = boundKindOf(m) == BoundKind::BoxK0 ? 1.0 + 1e-3 : 1.0;
-            const PackedPairTest test(m, threshold * margin);
-            std::size_t within = 0;
-            for (std::uint32_t i = 0; i < n; ++i) {
-                for (std::uint32_t j = i + 1; j < n; ++j) {
-                    const std::size_t count = seen.count({i, j});
-                    EXPECT_LE(count, 1u) << "pair " << i << "," << j << " reported twice";
-                    if (cost(m, units, i, j) <= threshold) {
-                        ++within;
-                        EXPECT_EQ(count, 1u) << toString(model.volume) << " k=" << model.k
-                                             << " misses pair " << i << "," << j;
-                    }
-                    if (count == 1) {
-                        PackedRegion a{}, b{};
-                        PackedExtra ae{}, be{};
-                        packRegion(regionOf(m, units[i]), boxModel, a, ae);
-                        packRegion(regionOf(m, units[j]), boxModel, b, be);
-                        EXPECT_FALSE(test.exceeds(PackedRef{&a, boxModel ? &ae : nullptr},
-                                                  PackedRef{&b, boxModel ? &be : nullptr}));
-                    }
-                }
-            }
+            const std::size_t within =
+                expectJoinFindsThePairs(m, units, lowPairCost(m, units), nameOf(model));
             if (n >= 17) {
                 EXPECT_GT(within, 0u);
-                EXPECT_LT(seen.size(), n * (n - 1) / 2) << "nothing was pruned";
             }
         }
     }
@@ -297,27 +347,47 @@ TEST(MergeBvh, JoinReportsEveryPairWithinTheThresholdOnce) {
 TEST(MergeBvh, SearchFindsTheCheapestPartner) {
     for (const Model& model : kModels) {
         const CostModel m(model.volume, model.k);
-        const std::vector<ClusterUnit> units = randomUnits(m, 500, 60.0, 77);
-        const MergeBvh bvh = buildOver(m, units);
-        for (std::uint32_t u = 0; u < units.size(); u += 7) {
-            double expected = std::numeric_limits<double>::infinity();
-            for (std::uint32_t v = 0; v < units.size(); ++v) {
-                if (v != u) expected = std::min(expected, cost(m, units, u, v));
-            }
-            for (MergeBvh::Simd simd : simds()) {
-                double best = std::numeric_limits<double>::infinity();
-                std::size_t visited = 0;
-                bvh.search(
-                    u, best,
-                    [&](std::uint32_t v) {
-                        ++visited;
-                        if (v != u) best = std::min(best, cost(m, units, u, v));
-                    },
-                    simd);
-                EXPECT_EQ(best, expected)
-                    << toString(model.volume) << " k=" << model.k << " " << nameOf(simd);
-                EXPECT_LT(visited, units.size()) << "the search visited everything";
-            }
+        expectSearchFindsTheCheapest(m, randomUnits(m, 500, 60.0, 77), 7, nameOf(model));
+    }
+}
+
+// The hierarchy's shape follows the items' Morton codes (MergeBvh.h): layouts that make the
+// splits uneven or the codes equal build deep or lopsided hierarchies, which answer as well.
+TEST(MergeBvh, DegenerateLayoutsAnswerAsWell) {
+    for (const Model& model : kModels) {
+        const CostModel m(model.volume, model.k);
+        const auto cube = [&](const glm::dvec3& lo, double side) {
+            const Aabb box{lo, lo + glm::dvec3(side)};
+            return m.leaf(Sphere{box.center(), side * 0.87}, box, 1e-9);
+        };
+        // Every centre the same: equal codes, split by count.
+        std::vector<ClusterUnit> same;
+        for (int i = 0; i < 40; ++i) {
+            const double side = 1.0 + 0.01 * i;
+            same.push_back(cube(glm::dvec3(-side / 2), side));
+        }
+        // Centres at halving distances along each axis: the codes of the near ones differ in
+        // ever lower bits, so split after split peels off one item, down to equal codes.
+        std::vector<ClusterUnit> halving;
+        for (int i = 0; i < 70; ++i) {
+            glm::dvec3 at(0.0);
+            at[i % 3] = std::ldexp(1000.0, -i / 3);
+            halving.push_back(cube(at, 1e-3 * (1.0 + 0.1 * (i % 5))));
+        }
+        // A clump and a few items far away: lopsided splits at the top.
+        std::vector<ClusterUnit> clump = randomUnits(m, 120, 2.0, 5);
+        for (int i = 0; i < 3; ++i)
+            clump.push_back(cube(glm::dvec3(1e4 * (i + 1), -1e4 * i, 3e3), 0.5));
+        // (Nested items: nothing to prune, every pair is near.)
+        const std::string name = nameOf(model);
+        EXPECT_GT(expectJoinFindsThePairs(m, same, lowPairCost(m, same), name + " same", false),
+                  0u);
+        expectSearchFindsTheCheapest(m, same, 1, name + " same", false);
+        for (const auto& [layout, units] :
+             {std::pair{"halving", &halving}, std::pair{"clump", &clump}}) {
+            const std::string what = name + " " + layout;
+            EXPECT_GT(expectJoinFindsThePairs(m, *units, lowPairCost(m, *units), what), 0u);
+            expectSearchFindsTheCheapest(m, *units, 1, what);
         }
     }
 }
