@@ -21,17 +21,20 @@ Region emptyRegion() {
 namespace {
 
 // The float nearest to x on the side that keeps a bound valid (x not NaN): the conversion,
-// then one step down (up) when it rounded the wrong way. Without branches: packing runs for
-// every node of every level, and which way a conversion rounds is a coin toss for the branch
-// predictor. A step down from a positive float is its bit pattern minus one, from a negative
-// one plus one, from a zero the negative smallest denormal (bits 0x80000001); +infinity steps
-// to the largest float, and -infinity never needs a step.
+// then one step down (up) when it rounded the wrong way. Without branches, in integer masks
+// (a conditional expression here compiles to jumps): packing runs for every node of every
+// level, and which way a conversion rounds is a coin toss for the branch predictor. A step
+// down from a positive float is its bit pattern minus one, from a negative one plus one; a
+// zero is taken as -0, whose step (plus one) is the negative smallest denormal; +infinity
+// steps to the largest float, and -infinity never needs a step.
 float roundDown(double x) {
     const float f = static_cast<float>(x);
     const auto bits = std::bit_cast<std::uint32_t>(f);
-    const std::uint32_t sign = bits >> 31;
-    const std::uint32_t step = (bits << 1) == 0 ? 0x80000001u : bits - 1u + 2u * sign;
-    return static_cast<double>(f) > x ? std::bit_cast<float>(step) : f;
+    const std::uint32_t zero = (bits << 1) == 0 ? 1u : 0u;
+    const std::uint32_t below = bits | zero << 31;
+    const std::uint32_t step = below - 1u + 2u * (below >> 31);
+    const std::uint32_t wrong = 0u - (static_cast<double>(f) > x ? 1u : 0u);
+    return std::bit_cast<float>((step & wrong) | (bits & ~wrong));
 }
 float roundUp(double x) { return -roundDown(-x); }
 
