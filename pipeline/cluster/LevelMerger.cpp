@@ -361,6 +361,9 @@ private:
                                               : model_.mergeCostWithin(H.unit, G.unit, best);
             best = std::min(best, cost);
         };
+        // Neighbours on the Morton curve first: a near partner's cost prunes from the start.
+        if (u > 0) visit(u - 1);
+        if (u + 1 < units_.size()) visit(u + 1);
         bvh_.search(u, best, visit, simd_);
         return best;
     }
