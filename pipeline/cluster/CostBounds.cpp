@@ -71,9 +71,14 @@ Region regionOf(const CostModel& model, const ClusterUnit& u) {
 }
 
 int sizeClass(const CostModel& model, const ClusterUnit& u) {
-    const double size =
-        model.volume() == VolumeType::Sphere ? u.sphere.radius : std::cbrt(u.volume);
-    return size > 0.0 ? std::ilogb(size) : std::numeric_limits<int>::min();
+    if (model.volume() == VolumeType::Sphere) {
+        return u.sphere.radius > 0.0 ? std::ilogb(u.sphere.radius)
+                                     : std::numeric_limits<int>::min();
+    }
+    // floor(log2(cbrt(V))) = floor(floor(log2(V)) / 3), without the cube root.
+    if (!(u.volume > 0.0)) return std::numeric_limits<int>::min();
+    const int e = std::ilogb(u.volume);
+    return e >= 0 ? e / 3 : -((2 - e) / 3);
 }
 
 } // namespace hlod

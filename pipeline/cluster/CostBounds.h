@@ -87,7 +87,8 @@ void packRegion(const Region& r, bool boxModel, PackedRegion& out, PackedExtra& 
 Region regionOf(const CostModel& model, const ClusterUnit& u);
 
 // Size class for MergeBvh: binary exponent of the radius (sphere) or of the cube root of the
-// volume (box), so clusters within a class differ in size by less than 2x.
+// volume (box; the volume's exponent divided by three, rounded down, with no root taken), so
+// clusters within a class differ in size by less than 2x.
 int sizeClass(const CostModel& model, const ClusterUnit& u);
 
 inline glm::dvec3 crossSections(const glm::dvec3& e) {

@@ -60,25 +60,18 @@ struct Group {
 };
 
 // Positions 0..n-1 of `units` in Morton (Z-curve) order of their centres (Morton.h), ties by
-// position, into `order`.
+// position, into `order`, and their codes in that order into `codes`.
 void spatialOrder(const TreeBuilder& builder, const std::vector<Id>& units,
                   std::vector<std::uint32_t>& order, std::vector<std::uint64_t>& codes) {
-    const std::size_t n = units.size();
     const bool box = builder.model().volume() == VolumeType::Aabb;
     mortonCodes(
-        n,
+        units.size(),
         [&](std::size_t i) {
             const ClusterUnit& u = builder.unit(units[i]);
             return box ? u.box.center() : u.sphere.center;
         },
         codes);
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        keyed[i] = {codes[i], i};
-    std::sort(keyed.begin(), keyed.end());
-    order.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-        order[i] = keyed[i].second;
+    sortMorton(codes, order);
 }
 
 // What the next level needs to inherit this level's graph (rule step 3, the contracted
@@ -137,7 +130,7 @@ public:
             classes[i] = sizeClass(model_, g.unit);
         }
         listsValid_ = false;
-        bvh_.build(regions, classes, model_);
+        bvh_.build(regions, classes, model_, &codes_);
         seen_.assign(n, 0);
         stamp_ = 0;
     }
@@ -435,7 +428,7 @@ private:
     std::vector<Id> units_;                 // internal index -> unit id (spatial order)
     std::vector<std::uint32_t> internalOf_; // position in ascending id -> internal index
     std::vector<std::uint32_t> positionOf_; // internal index -> position in ascending id
-    std::vector<std::uint64_t> codes_;      // spatialOrder's scratch
+    std::vector<std::uint64_t> codes_;      // internal index -> Morton code (spatialOrder)
     std::uint32_t cap_;
     std::size_t k_; // neighbours kept per unit (rule step 3)
     MergeBvh::Simd simd_;

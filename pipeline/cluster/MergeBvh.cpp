@@ -21,7 +21,7 @@ MergeBvh::Simd MergeBvh::bestSimd() {
 }
 
 void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
-                     const CostModel& model) {
+                     const CostModel& model, const std::vector<std::uint64_t>* given) {
     const auto n = static_cast<std::uint32_t>(items.size());
     model_ = &model;
     kind_ = boundKindOf(model);
@@ -33,9 +33,11 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
     packedExtra_.assign(n, PackedExtra{});
     if (n == 0) return;
     nodes_.reserve(n / 2 + 16);
-    std::vector<std::uint64_t>& codes = codes_;
-    mortonCodes(
-        n, [&](std::size_t i) { return items[i].box.center(); }, codes);
+    const bool haveCodes = given != nullptr && given->size() == n;
+    if (!haveCodes)
+        mortonCodes(
+            n, [&](std::size_t i) { return items[i].box.center(); }, codes_);
+    const std::vector<std::uint64_t>& codes = haveCodes ? *given : codes_;
     groupByClass(sizeClass);
     keys_.resize(n);
     std::vector<Slot> tops;

@@ -68,9 +68,11 @@ public:
     static constexpr std::uint32_t kItem = 0x80000000u;
 
     // Builds the hierarchy over items 0..n-1 with their regions and size classes, for the
-    // bounds of `model` (which must outlive the queries).
+    // bounds of `model` (which must outlive the queries). `codes`: the items' Morton codes
+    // (Morton.h) where the caller has them already (any codes do: only the shape depends on
+    // them); otherwise those of the regions' centres.
     void build(const std::vector<Region>& items, const std::vector<int>& sizeClass,
-               const CostModel& model);
+               const CostModel& model, const std::vector<std::uint64_t>* codes = nullptr);
 
     // The vector width the queries run with: Baseline (two lanes per vector, any x86-64 or
     // other target) or Avx2 (four lanes, x86-64 processors that have AVX2; the functions are

@@ -7,7 +7,10 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -48,6 +51,53 @@ void mortonCodes(std::size_t n, Point&& point, std::vector<std::uint64_t>& out) 
         const glm::dvec3 q = (point(i) - all.min) * scale;
         out[i] = morton::spreadBits(cell(q.x)) | morton::spreadBits(cell(q.y)) << 1 |
                  morton::spreadBits(cell(q.z)) << 2;
+    }
+}
+
+// Sorts `codes` ascending and writes into `order` where each came from (order[i] = the
+// position of the i-th smallest in the input), ties in input order: a stable LSD radix sort,
+// 11 bits per pass over the 63 bits a code uses, skipping the passes whose digit is the same
+// for every code (the counts of all passes come from one read of the codes). Linear in n,
+// where a comparison sort of (code, position) pairs made log n passes of dependent compares.
+inline void sortMorton(std::vector<std::uint64_t>& codes, std::vector<std::uint32_t>& order) {
+    const std::size_t n = codes.size();
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0u);
+    if (n < 512) {
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return codes[a] < codes[b] || (codes[a] == codes[b] && a < b);
+        });
+        std::vector<std::uint64_t> sorted(n);
+        for (std::size_t i = 0; i < n; ++i)
+            sorted[i] = codes[order[i]];
+        codes.swap(sorted);
+        return;
+    }
+    constexpr int kBits = 11;
+    constexpr int kPasses = 6; // 66 bits
+    constexpr std::size_t kBuckets = std::size_t{1} << kBits;
+    std::vector<std::uint32_t> count(kPasses * kBuckets, 0);
+    for (const std::uint64_t c : codes) {
+        for (int p = 0; p < kPasses; ++p)
+            ++count[p * kBuckets + ((c >> (p * kBits)) & (kBuckets - 1))];
+    }
+    std::vector<std::uint64_t> codesOut(n);
+    std::vector<std::uint32_t> orderOut(n);
+    for (int p = 0; p < kPasses; ++p) {
+        std::uint32_t* start = count.data() + p * kBuckets;
+        if (std::find(start, start + kBuckets, static_cast<std::uint32_t>(n)) != start + kBuckets)
+            continue; // one digit for all
+        std::uint32_t sum = 0;
+        for (std::size_t b = 0; b < kBuckets; ++b)
+            sum += std::exchange(start[b], sum);
+        const int shift = p * kBits;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t at = start[(codes[i] >> shift) & (kBuckets - 1)]++;
+            codesOut[at] = codes[i];
+            orderOut[at] = order[i];
+        }
+        codes.swap(codesOut);
+        order.swap(orderOut);
     }
 }
 

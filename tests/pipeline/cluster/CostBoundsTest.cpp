@@ -1,5 +1,7 @@
 // Set bounds of the clustering cost in their packed (single precision) form and the coupled
 // shape and volume bound of the box model (pipeline/cluster/CostBounds.h).
+#include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -142,6 +144,37 @@ TEST(CostBounds, CoupledShapeBoundIsTightForBoxesAlignedAlongAnAxis) {
         const PackedPairTest test(m, cheapest * 0.999);
         EXPECT_TRUE(test.exceeds(pack(ra, true).ref(true), pack(rb, true).ref(true)));
     }
+}
+
+TEST(CostBounds, SizeClassIsTheExponentOfTheSize) {
+    // Sphere: the radius' binary exponent; box: that of the volume's cube root, taken as the
+    // volume's exponent over three, rounded down (no root).
+    const CostModel sphere(VolumeType::Sphere, 0.0);
+    const CostModel box(VolumeType::Aabb, 0.0);
+    ClusterUnit u;
+    for (int e = -70; e <= 70; ++e) {
+        u.sphere.radius = std::ldexp(1.5, e);
+        u.volume = std::ldexp(1.0, e);
+        EXPECT_EQ(sizeClass(sphere, u), e);
+        const int expected = static_cast<int>(std::floor(e / 3.0));
+        EXPECT_EQ(sizeClass(box, u), expected) << "volume 2^" << e;
+        u.volume = std::ldexp(1.99, e); // the same exponent up to the next power of two
+        EXPECT_EQ(sizeClass(box, u), expected) << "volume 1.99 * 2^" << e;
+    }
+    // Sides within a factor of two share a class only if their cubes' exponents do.
+    u.volume = 1.0 * 1.0 * 1.0;
+    const int one = sizeClass(box, u);
+    u.volume = 1.9 * 1.9 * 1.9;
+    EXPECT_EQ(sizeClass(box, u), one);
+    u.volume = 2.0 * 2.0 * 2.0;
+    EXPECT_EQ(sizeClass(box, u), one + 1);
+    // Nothing to take an exponent of: the lowest class.
+    u.volume = 0.0;
+    EXPECT_EQ(sizeClass(box, u), std::numeric_limits<int>::min());
+    u.volume = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(sizeClass(box, u), std::numeric_limits<int>::min());
+    u.sphere.radius = 0.0;
+    EXPECT_EQ(sizeClass(sphere, u), std::numeric_limits<int>::min());
 }
 
 } // namespace
