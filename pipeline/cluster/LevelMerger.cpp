@@ -288,14 +288,22 @@ public:
         std::vector<Id> units;
         std::vector<std::uint32_t>& formed = members_;
         formed.clear();
+        // A unit that never merged is still in its own group (its index); the live groups
+        // formed in this level are the live ones after the first n, each headed by its key
+        // unit (merge() keeps the lower key's head), so neither test reads the groups in
+        // ascending-id order, which is scattered in memory.
+        std::vector<std::uint32_t>& formedAt = mark_; // position of a key -> its group
+        formedAt.assign(n, kNone);
+        for (auto g = static_cast<std::uint32_t>(n); g < groups_.size(); ++g) {
+            if (groups_[g].alive) formedAt[positionOf_[groups_[g].head]] = g;
+        }
         for (std::uint32_t p = 0; p < n; ++p) {
             const std::uint32_t i = internalOf_[p];
-            const std::uint32_t g = groupOf_[i];
-            if (groups_[g].size == 1) {
-                positionOfGroup[g] = static_cast<std::uint32_t>(units.size());
+            if (groupOf_[i] == i) {
+                positionOfGroup[i] = static_cast<std::uint32_t>(units.size());
                 units.push_back(units_[i]);
-            } else if (groups_[g].key == units_[i]) {
-                formed.push_back(g);
+            } else if (formedAt[p] != kNone) {
+                formed.push_back(formedAt[p]);
             }
         }
         for (const std::uint32_t g : formed) {
