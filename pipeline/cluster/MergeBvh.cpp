@@ -48,9 +48,7 @@ void MergeBvh::build(const std::vector<Region>& items, const std::vector<int>& s
             ++end;
         // The class in Morton order, ties by item (a level's items come in that order
         // already: then only the check runs).
-        const auto byCode = [&](std::uint32_t a, std::uint32_t b) {
-            return codes[a] < codes[b] || (codes[a] == codes[b] && a < b);
-        };
+        const ByCode byCode{codes};
         if (!std::is_sorted(order_.begin() + begin, order_.begin() + end, byCode))
             std::sort(order_.begin() + begin, order_.begin() + end, byCode);
         for (std::uint32_t p = begin; p < end; ++p)

@@ -54,6 +54,14 @@ void mortonCodes(std::size_t n, Point&& point, std::vector<std::uint64_t>& out) 
     }
 }
 
+// Orders positions into `codes` by (code, position): the order of sortMorton.
+struct ByCode {
+    const std::vector<std::uint64_t>& codes;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+        return codes[a] < codes[b] || (codes[a] == codes[b] && a < b);
+    }
+};
+
 // Sorts `codes` ascending and writes into `order` where each came from (order[i] = the
 // position of the i-th smallest in the input), ties in input order: a stable LSD radix sort,
 // 11 bits per pass over the 63 bits a code uses, skipping the passes whose digit is the same
@@ -64,9 +72,7 @@ inline void sortMorton(std::vector<std::uint64_t>& codes, std::vector<std::uint3
     order.resize(n);
     std::iota(order.begin(), order.end(), 0u);
     if (n < 512) {
-        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-            return codes[a] < codes[b] || (codes[a] == codes[b] && a < b);
-        });
+        std::sort(order.begin(), order.end(), ByCode{codes});
         std::vector<std::uint64_t> sorted(n);
         for (std::size_t i = 0; i < n; ++i)
             sorted[i] = codes[order[i]];

@@ -80,6 +80,18 @@ Region unionOf(const CostModel& m, const std::vector<ClusterUnit>& units, std::s
     return r;
 }
 
+// unionOf(...) packed (PackedRegion, and PackedExtra for the box model).
+struct PackedUnion {
+    PackedRegion r{};
+    PackedExtra e{};
+};
+PackedUnion packedUnion(const CostModel& m, const std::vector<ClusterUnit>& units,
+                        std::size_t count, std::mt19937_64& rng) {
+    PackedUnion out;
+    packRegion(unionOf(m, units, count, rng), m.volume() == VolumeType::Aabb, out.r, out.e);
+    return out;
+}
+
 // The query compiled for the model's bound kind (what MergeBvh runs) answers as the generic
 // one (K = Any) that the test below checks against the scalar test: same verdicts, same bounds.
 template <int W, BoundKind K>
@@ -124,15 +136,14 @@ TEST(MergeBvh, WideLanesAnswerAsTheScalarTest) {
         const std::vector<ClusterUnit> units = randomUnits(m, 400, 30.0, 9);
         for (int round = 0; round < 300; ++round) {
             // A query region (one unit or the union of a few) against four slot regions.
-            auto region = [&](std::size_t count) { return unionOf(m, units, count, rng); };
-            PackedRegion qr{};
-            PackedExtra qe{};
-            packRegion(region(1 + rng() % 3), boxModel, qr, qe);
+            const auto [qr, qe] = packedUnion(m, units, 1 + rng() % 3, rng);
             WideRegions w{};
             PackedRegion sr[4]{};
             PackedExtra se[4]{};
             for (int l = 0; l < 4; ++l) {
-                packRegion(region(1 + rng() % 4), boxModel, sr[l], se[l]);
+                const PackedUnion slot = packedUnion(m, units, 1 + rng() % 4, rng);
+                sr[l] = slot.r;
+                se[l] = slot.e;
                 setLane(w, l, sr[l], se[l]);
                 PackedRegion back{};
                 PackedExtra backExtra{};
@@ -184,19 +195,14 @@ TEST(MergeBvh, SingleK0TestIsTheDoubleTestWithAMargin) {
             u.fv *= scale * scale * scale;
         }
         for (int round = 0; round < 400; ++round) {
-            auto region = [&](std::size_t count) { return unionOf(m, units, count, rng); };
-            PackedRegion qr{};
-            PackedExtra qe{};
-            packRegion(region(1 + rng() % 3), true, qr, qe);
+            const auto [qr, qe] = packedUnion(m, units, 1 + rng() % 3, rng);
             WideRegions a{};
             WideRegions b{};
             for (int l = 0; l < 4; ++l) {
-                PackedRegion r{};
-                PackedExtra e{};
-                packRegion(region(1 + rng() % 4), true, r, e);
-                setLane(a, l, r, e);
-                packRegion(region(1 + rng() % 4), true, r, e);
-                setLane(b, l, r, e);
+                const PackedUnion ua = packedUnion(m, units, 1 + rng() % 4, rng);
+                setLane(a, l, ua.r, ua.e);
+                const PackedUnion ub = packedUnion(m, units, 1 + rng() % 4, rng);
+                setLane(b, l, ub.r, ub.e);
             }
             const WideQueryT<2, BoundKind::BoxK0> exact(m, qr, qe);
             const WideQueryT<2, BoundKind::BoxK0Single> single(m, qr, qe);
