@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/view/TreeViews.h"
 #include "widgets/doc/ProjectSession.h"
 
@@ -98,7 +99,8 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
             drawCost[n] = built_.build->bake.nodes[n].proxy.triangleCount();
         }
     }
-    selectionTree_ = std::make_unique<SelectionTree>(tree, std::move(drawCost));
+    selectionTree_ = std::make_unique<SelectionTree>(
+        tree, std::move(drawCost), rootHasNoProxy(tree, built_.build->bake));
     frontCache_ = std::make_unique<FrontCache>(*selectionTree_);
     // The selection keeps its instances; its cluster node is re-derived for the new tree.
     StudioSelection selection = selection_;

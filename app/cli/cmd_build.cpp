@@ -58,6 +58,25 @@ void printTable(const std::vector<GeometryStats>& rows) {
     }
 }
 
+void printLevels(const std::vector<LevelRow>& rows, const BakeResult& bake, double ratio) {
+    std::printf("levels:       %5s %7s %9s %21s %11s %7s\n", "level", "nodes", "children",
+                "error budget (m)", "triangles", "share");
+    for (const LevelRow& r : rows) {
+        if (r.level == 0) {
+            std::printf("              %5d %7zu %9s %21s %11zu %6.1f%%  (original meshes)\n",
+                        r.level, r.nodes, "-", "-", r.triangles, r.share * 100.0);
+            continue;
+        }
+        char budget[64];
+        std::snprintf(budget, sizeof(budget), "%.3g - %.3g", r.budgetMin, r.budgetMax);
+        std::printf("              %5d %7zu %9.1f %21s %11zu %6.1f%%\n", r.level, r.nodes,
+                    r.meanChildren, budget, r.triangles, r.share * 100.0);
+    }
+    std::printf("dissolved:    %zu clusters whose proxy did not pay for itself (more than %g x "
+                "the triangles it replaces)\n",
+                bake.dissolved, ratio);
+}
+
 void printJson(const NodeOutput& out) {
     const ExportResult& ex = *out.exported;
     nlohmann::json j = buildTreeJson(*out.scene, *out.tree, *out.bake, ex.info);
@@ -94,6 +113,7 @@ void printSummary(const NodeOutput& out) {
                 "a proxy %.1f%% of what it replaces\n",
                 ex.info.share.allProxies * 100.0, ex.info.share.rootProxy * 100.0,
                 ex.info.share.replaced * 100.0);
+    printLevels(ex.info.levels, bake, bp.proxyRatio);
     printTable(ex.info.statistics);
     std::printf("output:       %s (%.2f MB)\n", ex.output.string().c_str(),
                 static_cast<double>(ex.written.bytes) / 1.0e6);

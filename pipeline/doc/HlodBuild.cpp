@@ -5,6 +5,7 @@
 
 #include "pipeline/graph/Parameters.h"
 #include "pipeline/graph/SplitClusters.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 
 namespace hlod {
 
@@ -26,16 +27,17 @@ HlodBuild buildHlod(const Scene& scene, const HlodSettings& settings, const Prog
     out.settings = settings;
     auto t = Clock::now();
     if (previous && sameClustering(previous->settings, settings)) {
-        out.tree = previous->tree;
+        out.clustered = previous->clustered;
         out.treeReused = true;
     } else {
-        out.tree =
+        out.clustered =
             splitClusters(buildClusterTree(scene, settings.cluster, progress), settings.dissolved);
     }
     out.clusterSeconds = std::chrono::duration<double>(Clock::now() - t).count();
     progress.throwIfCancelled();
     t = Clock::now();
-    out.bake = bakeProxies(scene, out.tree, settings.bake, progress);
+    out.tree = out.clustered;
+    out.bake = bakeEconomised(scene, out.tree, settings.bake, progress);
     out.bakeSeconds = std::chrono::duration<double>(Clock::now() - t).count();
     return out;
 }

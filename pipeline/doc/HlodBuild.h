@@ -36,8 +36,9 @@ bool sameBaking(const HlodSettings& a, const HlodSettings& b);
 
 struct HlodBuild {
     HlodSettings settings;
-    ClusterTree tree;
-    BakeResult bake;
+    ClusterTree clustered; // as clustered (hand edits applied), before the proxy economy
+    ClusterTree tree;      // what the proxies belong to: `clustered` without dissolved nodes
+    BakeResult bake;       // parallel to `tree`
     double clusterSeconds = 0.0;
     double bakeSeconds = 0.0;
     bool treeReused = false; // the tree came from the previous build (nothing reclustered)

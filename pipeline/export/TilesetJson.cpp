@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "pipeline/export/Package.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 
 namespace hlod {
 
@@ -100,8 +101,11 @@ nlohmann::json tile(const ClusterTree& tree, Id n, const std::vector<double>& er
 nlohmann::json buildTileset(const ClusterTree& tree, const BakeResult& bake,
                             const std::vector<bool>& hasContent,
                             const std::optional<GeoLocation>& geo) {
-    const std::vector<double> err = monotoneErrors(tree, bake);
+    std::vector<double> err = monotoneErrors(tree, bake);
     const std::vector<Aabb> boxes = tileBoxes(tree, bake);
+    // A root without a proxy (ProxyEconomy.h) draws nothing itself: its error is the whole
+    // model, so a runtime refines it whenever the model covers more than the pixel error.
+    if (rootHasNoProxy(tree, bake)) err[tree.root] = std::max(err[tree.root], boxes[tree.root].diagonal());
     nlohmann::json root = tile(tree, tree.root, err, boxes, hasContent);
     root["refine"] = "REPLACE"; // inherited by every descendant
     if (geo) {

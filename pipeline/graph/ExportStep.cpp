@@ -29,6 +29,7 @@ BuildInfo makeBuildInfo(const BuildInputs& in, bool dlod, double* dlodSeconds) {
     }
     info.statistics.push_back(hlodStats(in.scene, in.tree, in.bake, hlodVersionName(in.tree)));
     info.share = proxyShare(in.scene, in.tree, in.bake);
+    info.levels = levelTable(in.scene, in.tree, in.bake);
     return info;
 }
 

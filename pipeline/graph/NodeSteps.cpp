@@ -10,6 +10,7 @@
 #include "pipeline/graph/PipelineGraph.h"
 #include "pipeline/graph/SplitClusters.h"
 #include "pipeline/io/SampleScene.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 
 namespace hlod {
 
@@ -57,8 +58,11 @@ NodeOutput runBake(const GraphNode& node, const NodeOutput& in, const Progress& 
     NodeOutput out = in;
     out.bakeParams = bakeParamsFrom(node.params);
     validate(out.bakeParams.screen);
-    out.bake = std::make_shared<const BakeResult>(
-        bakeProxies(*in.scene, *in.tree, out.bakeParams, progress));
+    // The proxy economy dissolves nodes: the tree downstream is the one the proxies belong to.
+    auto tree = std::make_shared<ClusterTree>(*in.tree);
+    out.bake =
+        std::make_shared<const BakeResult>(bakeEconomised(*in.scene, *tree, out.bakeParams, progress));
+    out.tree = std::move(tree);
     out.exported.reset();
     return out;
 }

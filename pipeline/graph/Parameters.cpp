@@ -101,6 +101,14 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
         decl("viewport_height", "Viewport height", T::Double, N::Bake, sp.viewportHeight, "px",
              "Viewport height of the reference camera (switch distances)", "--viewport-height"),
         1.0, 100000.0));
+    v.push_back(ranged(decl("proxy_ratio", "Proxy ratio", T::Double, N::Bake, BakeParams{}.proxyRatio,
+                            "× input",
+                            "A cluster keeps its proxy only when the proxy has at most this "
+                            "fraction of the triangles it replaces; otherwise the cluster is "
+                            "dissolved into its parent. All proxies together then hold at most "
+                            "ratio / (1 - ratio) of the original; 1 keeps every proxy",
+                            "--proxy-ratio"),
+                       0.05, 1.0, true));
     v.push_back(ranged(decl("threads", "Threads", T::Int, N::Bake, 0, "",
                             "Worker threads for baking; 0 = all hardware threads", "--threads"),
                        0, 1024));
@@ -425,6 +433,7 @@ BakeParams bakeParamsFrom(const ParamValues& v) {
     p.screen.pixelError = paramNumber(v, "pixel_error");
     p.screen.fovYDegrees = paramNumber(v, "fov");
     p.screen.viewportHeight = paramNumber(v, "viewport_height");
+    p.proxyRatio = paramNumber(v, "proxy_ratio");
     p.threads = paramInt(v, "threads");
     if (paramBool(v, "cache")) {
         const std::string dir = paramText(v, "cache_dir");
@@ -459,6 +468,7 @@ ParamValues paramsFrom(const BakeParams& p) {
     v["pixel_error"] = p.screen.pixelError;
     v["fov"] = p.screen.fovYDegrees;
     v["viewport_height"] = p.screen.viewportHeight;
+    v["proxy_ratio"] = p.proxyRatio;
     v["threads"] = p.threads;
     v["cache"] = !p.cacheDir.empty();
     v["cache_dir"] = p.cacheDir.string();

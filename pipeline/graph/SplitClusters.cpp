@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "pipeline/cluster/DissolveNodes.h"
+
 namespace hlod {
 
 namespace {
@@ -23,28 +25,6 @@ std::vector<InstanceSet> allLeafSets(const ClusterTree& tree) {
     return sets;
 }
 
-void recomputeLevels(ClusterTree& tree) {
-    // Post-order without recursion: a node's level is known once all its children are done.
-    std::vector<std::pair<Id, bool>> stack{{tree.root, false}};
-    while (!stack.empty()) {
-        auto [id, expanded] = stack.back();
-        stack.pop_back();
-        ClusterNode& n = tree.nodes[id];
-        if (n.isLeaf()) {
-            n.level = 0;
-        } else if (!expanded) {
-            stack.push_back({id, true});
-            for (Id c : n.children)
-                stack.push_back({c, false});
-        } else {
-            int level = 0;
-            for (Id c : n.children)
-                level = std::max(level, tree.nodes[c].level + 1);
-            n.level = level;
-        }
-    }
-}
-
 } // namespace
 
 ClusterTree splitClusters(ClusterTree tree, const std::vector<InstanceSet>& dissolved) {
@@ -61,39 +41,7 @@ ClusterTree splitClusters(ClusterTree tree, const std::vector<InstanceSet>& diss
         }
     }
     if (!any) return tree;
-
-    // The nearest surviving ancestor adopts the children of removed nodes.
-    auto keptParent = [&](Id id) {
-        Id p = tree.nodes[id].parent;
-        while (p != kNoId && remove[p])
-            p = tree.nodes[p].parent;
-        return p;
-    };
-    std::vector<Id> newId(tree.nodes.size(), kNoId);
-    Id next = 0;
-    for (Id i = 0; i < tree.nodes.size(); ++i) {
-        if (!remove[i]) newId[i] = next++;
-    }
-    ClusterTree out;
-    out.volume = tree.volume;
-    out.k = tree.k;
-    out.root = newId[tree.root];
-    out.nodes.resize(next);
-    for (Id i = 0; i < tree.nodes.size(); ++i) {
-        if (remove[i]) continue;
-        ClusterNode n = tree.nodes[i];
-        n.children.clear();
-        const Id p = n.parent == kNoId ? kNoId : keptParent(i);
-        n.parent = p == kNoId ? kNoId : newId[p];
-        out.nodes[newId[i]] = std::move(n);
-    }
-    for (Id i = 0; i < tree.nodes.size(); ++i) {
-        if (remove[i] || i == tree.root) continue;
-        out.nodes[out.nodes[newId[i]].parent].children.push_back(newId[i]);
-    }
-    // Children were appended in ascending old id order, which is ascending new id order.
-    recomputeLevels(out);
-    return out;
+    return dissolveNodes(tree, remove).tree;
 }
 
 } // namespace hlod

@@ -5,8 +5,9 @@ namespace hlod {
 
 namespace {
 
-void appendInstance(const Scene& scene, Id instance, const glm::dvec3& origin, ProxyMesh& out) {
-    const MeshInstance& inst = scene.instances[instance];
+void appendInstance(const Scene& scene, const AggregatePart& part, const glm::dvec3& origin,
+                    ProxyMesh& out) {
+    const MeshInstance& inst = scene.instances[part.instance];
     const Mesh& mesh = scene.meshes[inst.mesh];
     const glm::dmat4& world = scene.nodes[inst.node].world;
     const Material& material =
@@ -17,7 +18,7 @@ void appendInstance(const Scene& scene, Id instance, const glm::dvec3& origin, P
     // Double precision transform, then relative to the node origin, so far-away clusters keep
     // sub-millimetre float precision.
     const glm::dmat3 linear(world);
-    const glm::dvec3 shift = glm::dvec3(world[3]) - origin;
+    const glm::dvec3 shift = part.offset ? *part.offset : glm::dvec3(world[3]) - origin;
     for (const glm::vec3& p : mesh.positions) {
         out.positions.push_back(glm::vec3(linear * glm::dvec3(p) + shift));
     }
@@ -36,9 +37,10 @@ void appendInstance(const Scene& scene, Id instance, const glm::dvec3& origin, P
     }
 }
 
-void appendProxy(const ProxyMesh& proxy, const glm::dvec3& origin, ProxyMesh& out) {
+void appendProxy(const AggregatePart& part, const glm::dvec3& origin, ProxyMesh& out) {
+    const ProxyMesh& proxy = *part.proxy;
     const auto first = static_cast<std::uint32_t>(out.positions.size());
-    const glm::dvec3 shift = proxy.origin - origin;
+    const glm::dvec3 shift = part.offset ? *part.offset : proxy.origin - origin;
     for (const glm::vec3& p : proxy.positions) {
         out.positions.push_back(glm::vec3(glm::dvec3(p) + shift));
     }
@@ -85,9 +87,9 @@ ProxyMesh aggregateParts(const Scene& scene, std::span<const AggregatePart> part
     out.indices.reserve(indices);
     for (const AggregatePart& part : parts) {
         if (part.proxy)
-            appendProxy(*part.proxy, origin, out);
+            appendProxy(part, origin, out);
         else if (part.instance != kNoId)
-            appendInstance(scene, part.instance, origin, out);
+            appendInstance(scene, part, origin, out);
     }
     return out;
 }

@@ -11,6 +11,7 @@
 // Order: parts in the order given, vertices and triangles in source order (deterministic).
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include "pipeline/proxy/ProxyMesh.h"
@@ -19,9 +20,13 @@
 namespace hlod {
 
 // One child's contribution: a scene instance (leaf) or an already baked proxy (inner child).
+// `offset`: where the part's own frame (the instance's translation, the proxy's origin) sits
+// relative to the node's origin; unset = computed from the world positions. The baker sets it
+// to a quantised value, so translated copies of a cluster aggregate to identical floats.
 struct AggregatePart {
     Id instance = kNoId;              // set for leaf children
     const ProxyMesh* proxy = nullptr; // set for inner children
+    std::optional<glm::dvec3> offset = std::nullopt;
 };
 
 ProxyMesh aggregateParts(const Scene& scene, std::span<const AggregatePart> parts,

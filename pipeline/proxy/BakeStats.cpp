@@ -1,6 +1,7 @@
 // Thesis tables 6.2-6.6 style statistics, see BakeStats.h for the conventions.
 #include "pipeline/proxy/BakeStats.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -88,6 +89,39 @@ ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeRes
     }
     if (replaced > 0.0) share.replaced = proxies / replaced;
     return share;
+}
+
+std::vector<LevelRow> levelTable(const Scene& scene, const ClusterTree& tree,
+                                 const BakeResult& bake) {
+    std::vector<LevelRow> rows(static_cast<std::size_t>(std::max(tree.height(), 0)) + 1);
+    std::vector<std::size_t> children(rows.size(), 0);
+    for (std::size_t l = 0; l < rows.size(); ++l)
+        rows[l].level = static_cast<int>(l);
+    for (Id id = 0; id < tree.nodes.size(); ++id) {
+        const ClusterNode& n = tree.nodes[id];
+        if (n.parent == kNoId && id != tree.root) continue; // not part of the tree
+        const auto l = static_cast<std::size_t>(n.level);
+        if (l >= rows.size()) continue;
+        LevelRow& row = rows[l];
+        const bool first = row.nodes == 0;
+        ++row.nodes;
+        children[l] += n.children.size();
+        if (n.isLeaf()) {
+            row.triangles += scene.meshes[scene.instances[n.instance].mesh].triangleCount();
+            continue;
+        }
+        const NodeBake& b = bake.nodes[id];
+        row.triangles += b.proxy.triangleCount();
+        row.budgetMin = first ? b.errorBudget : std::min(row.budgetMin, b.errorBudget);
+        row.budgetMax = first ? b.errorBudget : std::max(row.budgetMax, b.errorBudget);
+    }
+    const double original = static_cast<double>(originalStats(scene).triangles);
+    for (std::size_t l = 0; l < rows.size(); ++l) {
+        LevelRow& row = rows[l];
+        if (row.nodes) row.meanChildren = static_cast<double>(children[l]) / row.nodes;
+        row.share = original > 0.0 ? static_cast<double>(row.triangles) / original : 0.0;
+    }
+    return rows;
 }
 
 std::string hlodVersionName(const ClusterTree& tree) {

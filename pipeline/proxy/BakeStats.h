@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/proxy/DlodChain.h"
@@ -48,6 +49,22 @@ GeometryStats dlodStats(const DlodSummary& summary);
 GeometryStats hlodStats(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
                         const std::string& version);
 ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeResult& bake);
+
+// One row of the per-level table of a built HLOD (levels as ClusterNode::level: leaves 0, a
+// parent one above its highest child). Level 0 holds the leaves: the original meshes, whose
+// share is 1. Inner levels: the proxies of that level, their error budgets (metres), and their
+// triangles as a share of the original scene's triangles.
+struct LevelRow {
+    int level = 0;
+    std::size_t nodes = 0;
+    double meanChildren = 0.0;
+    double budgetMin = 0.0, budgetMax = 0.0;
+    std::size_t triangles = 0; // proxy triangles (level 0: original triangles)
+    double share = 0.0;        // triangles / original triangles
+};
+
+std::vector<LevelRow> levelTable(const Scene& scene, const ClusterTree& tree,
+                                 const BakeResult& bake);
 
 // "HLOD, sphere", "HLOD, AABB k=1", ... as in the thesis' tables.
 std::string hlodVersionName(const ClusterTree& tree);

@@ -120,7 +120,8 @@ nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const 
                          {"screen_size", info.bake.screen.screenSize},
                          {"pixel_error", info.bake.screen.pixelError},
                          {"fov_y_degrees", info.bake.screen.fovYDegrees},
-                         {"viewport_height", info.bake.screen.viewportHeight}};
+                         {"viewport_height", info.bake.screen.viewportHeight},
+                         {"proxy_ratio", info.bake.proxyRatio}};
     doc["root"] = tree.root == kNoId ? nlohmann::json() : nlohmann::json(tree.root);
     nlohmann::json nodes = nlohmann::json::array();
     for (Id id = 0; id < tree.nodes.size(); ++id)
@@ -133,9 +134,20 @@ nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const 
     doc["proxy_share"] = {{"all_proxies", info.share.allProxies},
                           {"root_proxy", info.share.rootProxy},
                           {"replaced", info.share.replaced}};
+    nlohmann::json levels = nlohmann::json::array();
+    for (const LevelRow& r : info.levels)
+        levels.push_back({{"level", r.level},
+                          {"nodes", r.nodes},
+                          {"mean_children", r.meanChildren},
+                          {"error_budget_min", r.budgetMin},
+                          {"error_budget_max", r.budgetMax},
+                          {"triangles", r.triangles},
+                          {"share", r.share}});
+    doc["levels"] = std::move(levels);
     doc["bake"] = {{"inner_nodes", bake.innerNodes},
                    {"baked", bake.baked},
                    {"reused", bake.reused},
+                   {"dissolved", bake.dissolved},
                    {"input_triangles", bake.inputTriangles},
                    {"proxy_triangles", bake.proxyTriangles},
                    {"seconds", bake.seconds}};

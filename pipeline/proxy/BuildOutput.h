@@ -30,6 +30,7 @@ struct BuildInfo {
     BakeParams bake;
     std::vector<GeometryStats> statistics; // rows of the thesis-style table
     ProxyShare share;
+    std::vector<LevelRow> levels; // per-level table (BakeStats.h levelTable)
     nlohmann::json clusterParameters; // as the caller names them (volume, k, ...)
 };
 

@@ -12,8 +12,12 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
+#include <mutex>
+#include <unordered_map>
+
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/Aggregate.h"
+#include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/proxy/ProxyCache.h"
 #include "pipeline/proxy/SloppyProxy.h"
@@ -23,7 +27,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 3;
+constexpr std::uint64_t kBakeFormatVersion = 4;
 
 // Children before parents, only nodes reachable from the root.
 std::vector<Id> postOrder(const ClusterTree& tree) {
@@ -102,19 +106,16 @@ void fillFrames(const Scene& scene, const ClusterTree& tree, const BakeParams& p
         NodeBake& nb = nodes[id];
         nb.diameter = nodeDiameter(tree.nodes[id]);
         if (!(nb.diameter > 0.0)) nb.diameter = boxes[id].diagonal();
-        nb.errorBudget = proxyErrorBudget(nb.diameter, params.screen);
+        nb.errorBudget = quantizedBudget(proxyErrorBudget(nb.diameter, params.screen));
         nb.switchDistance = switchDistance(nb.diameter, params.screen);
         nb.proxy.origin = boxes[id].empty() ? glm::dvec3(0.0) : boxes[id].center();
     }
 }
 
-} // namespace
-
-std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree& tree,
-                                           const BakeParams& params) {
-    const std::vector<Id> order = postOrder(tree);
-    std::vector<NodeBake> frames(tree.nodes.size());
-    fillFrames(scene, tree, params, order, frames);
+// Leaf keys: what a leaf contributes in its own frame (mesh, material colour and the linear
+// part of its transform; the translation enters the parent's key as a quantised offset).
+void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& order,
+              std::vector<NodeBake>& nodes) {
     std::vector<std::uint8_t> used(scene.meshes.size(), 0);
     for (Id id : order) {
         const ClusterNode& n = tree.nodes[id];
@@ -124,33 +125,23 @@ std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree
     tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t m) {
         if (used[m]) meshHash[m] = hashMesh(scene.meshes[m]);
     });
-    std::vector<std::uint64_t> keys(tree.nodes.size(), 0);
     for (Id id : order) {
         const ClusterNode& node = tree.nodes[id];
-        if (node.isLeaf()) {
-            ContentHash h(0x6c656166); // "leaf"
-            if (node.instance != kNoId) {
-                const MeshInstance& inst = scene.instances[node.instance];
-                const Mesh& mesh = scene.meshes[inst.mesh];
-                const Id mat = mesh.material < scene.materials.size() ? mesh.material : 0;
-                h.addValue(meshHash[inst.mesh]);
-                h.addValue(scene.materials[mat].effectiveColor());
-                h.addValue(scene.nodes[inst.node].world);
-            }
-            keys[id] = h.digest();
-            continue;
+        if (!node.isLeaf()) continue;
+        ContentHash h(0x6c656166); // "leaf"
+        if (node.instance != kNoId) {
+            const MeshInstance& inst = scene.instances[node.instance];
+            const Mesh& mesh = scene.meshes[inst.mesh];
+            const Id mat = mesh.material < scene.materials.size() ? mesh.material : 0;
+            h.addValue(meshHash[inst.mesh]);
+            h.addValue(scene.materials[mat].effectiveColor());
+            h.addValue(glm::dmat3(scene.nodes[inst.node].world));
         }
-        ContentHash h(0x6e6f6465); // "node"
-        hashOptions(h, params);
-        h.addValue(frames[id].errorBudget);
-        h.addValue(frames[id].proxy.origin);
-        h.addValue(static_cast<std::uint64_t>(node.children.size()));
-        for (Id c : node.children)
-            h.addValue(keys[c]);
-        keys[id] = h.digest();
+        nodes[id].key = h.digest();
     }
-    return keys;
 }
+
+} // namespace
 
 ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& params,
                     const Progress& progress) {
@@ -183,57 +174,141 @@ struct BakeRun {
     ProxyCache cache;
     BakeResult& result;
     std::unique_ptr<std::atomic<int>[]> pending; // inner children not yet baked, per node
-    std::atomic<std::size_t> done{0}, baked{0}, reused{0}, triangles{0};
+    // Per dissolved node: the nodes whose representations stand in for it (its inputs).
+    std::vector<std::vector<Id>> standIns;
+    std::mutex bakedMutex;
+    std::unordered_map<std::uint64_t, Id> bakedByKey; // this run's proxies, by key
+    std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0};
     tbb::task_group group;
+
+    // The representations node `id` is baked from: its children, a dissolved child replaced
+    // by its own inputs (already expanded when that child was decided).
+    std::vector<Id> inputsOf(Id id) const {
+        std::vector<Id> inputs;
+        for (Id c : tree.nodes[id].children) {
+            if (result.nodes[c].dissolved)
+                inputs.insert(inputs.end(), standIns[c].begin(), standIns[c].end());
+            else
+                inputs.push_back(c);
+        }
+        return inputs;
+    }
+
+    // The parts in the node's quantised frame, and the node's key from the same values.
+    std::vector<AggregatePart> partsOf(Id id, const std::vector<Id>& inputs) {
+        NodeBake& nb = result.nodes[id];
+        const double grid = offsetGrid(nb.errorBudget);
+        ContentHash h(0x6e6f6465); // "node"
+        hashOptions(h, params);
+        h.addValue(nb.errorBudget);
+        h.addValue(static_cast<std::uint64_t>(inputs.size()));
+        std::vector<AggregatePart> parts;
+        parts.reserve(inputs.size());
+        for (Id r : inputs) {
+            const ClusterNode& node = tree.nodes[r];
+            AggregatePart part;
+            glm::dvec3 at;
+            if (node.isLeaf()) {
+                part.instance = node.instance;
+                at = node.instance == kNoId
+                         ? nb.proxy.origin
+                         : glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
+            } else {
+                part.proxy = &result.nodes[r].proxy;
+                at = part.proxy->origin;
+            }
+            part.offset = quantizeOffset(at - nb.proxy.origin, grid);
+            h.addValue(result.nodes[r].key);
+            h.addValue(*part.offset);
+            parts.push_back(part);
+        }
+        nb.key = h.digest();
+        return parts;
+    }
+
+    // This run's earlier proxy with the same key, or the disk cache's.
+    std::optional<ProxyMesh> reuse(std::uint64_t key) {
+        {
+            const std::lock_guard lock(bakedMutex);
+            const auto it = bakedByKey.find(key);
+            if (it != bakedByKey.end()) return result.nodes[it->second].proxy;
+        }
+        return cache.load(key);
+    }
+
+    void remember(Id id) {
+        const std::lock_guard lock(bakedMutex);
+        bakedByKey.emplace(result.nodes[id].key, id);
+    }
+
+    // The economy's decision (ProxyBaker.h), once the proxy is known.
+    void decide(Id id, std::vector<Id>&& inputs) {
+        NodeBake& nb = result.nodes[id];
+        const ClusterNode& node = tree.nodes[id];
+        const double limit = params.proxyRatio * static_cast<double>(nb.inputTriangles);
+        if (node.locked || static_cast<double>(nb.proxy.triangleCount()) <= limit) {
+            triangles += nb.proxy.triangleCount();
+            return;
+        }
+        ++dissolved;
+        if (id == tree.root) {
+            nb.hasProxy = false; // nothing to hang the children from: refined always
+        } else {
+            nb.dissolved = true;
+            standIns[id] = std::move(inputs);
+        }
+    }
 
     void bakeNode(Id id) {
         progress.throwIfCancelled();
-        const ClusterNode& node = tree.nodes[id];
         NodeBake& nb = result.nodes[id];
-        std::vector<AggregatePart> parts;
-        parts.reserve(node.children.size());
-        for (Id c : node.children) {
-            const ClusterNode& child = tree.nodes[c];
-            if (child.isLeaf())
-                parts.push_back(AggregatePart{child.instance, nullptr});
-            else
-                parts.push_back(AggregatePart{kNoId, &result.nodes[c].proxy});
-        }
+        std::vector<Id> inputs = inputsOf(id);
+        const std::vector<AggregatePart> parts = partsOf(id, inputs);
         nb.inputTriangles = aggregateTriangleCount(scene, parts);
         const glm::dvec3 origin = nb.proxy.origin;
-        if (std::optional<ProxyMesh> cached = cache.load(nb.key)) {
-            nb.proxy = std::move(*cached);
+        if (std::optional<ProxyMesh> known = reuse(nb.key)) {
+            nb.proxy = std::move(*known);
             nb.reused = true;
             ++reused;
         } else {
             nb.proxy =
                 makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params, progress);
-            nb.proxy.origin = origin;
             cache.store(nb.key, nb.proxy);
             ++baked;
         }
-        triangles += nb.proxy.triangleCount();
+        nb.proxy.origin = origin;
+        remember(id);
+        decide(id, std::move(inputs));
         const std::size_t finished = ++done;
         progress.emit(ProgressInfo{"bake", finished, result.innerNodes,
                                    "baked " + std::to_string(baked.load()) + ", reused " +
-                                       std::to_string(reused.load()) + ", " +
+                                       std::to_string(reused.load()) + ", dissolved " +
+                                       std::to_string(dissolved.load()) + ", " +
                                        std::to_string(triangles.load()) + " proxy triangles"});
-        const Id parent = node.parent;
+        const Id parent = tree.nodes[id].parent;
         if (parent != kNoId && pending[parent].fetch_sub(1, std::memory_order_acq_rel) == 1) {
             group.run([this, parent] { bakeNode(parent); });
         }
     }
 };
 
-} // namespace
-
-BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
-                       const Progress& progress) {
+void validateParams(const BakeParams& params) {
     validate(params.screen);
     if (params.threads < 0 || params.threads > 1024) {
         throw Error(ErrorCode::InvalidArgument,
                     "threads must be within [0, 1024], got " + std::to_string(params.threads));
     }
+    if (!(params.proxyRatio > 0.0 && params.proxyRatio <= 1000.0)) {
+        throw Error(ErrorCode::InvalidArgument, "proxy ratio must be within (0, 1000], got " +
+                                                    std::to_string(params.proxyRatio));
+    }
+}
+
+} // namespace
+
+BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                       const Progress& progress) {
+    validateParams(params);
     const auto start = std::chrono::steady_clock::now();
     const int threads = params.threads > 0 ? params.threads : tbb::info::default_concurrency();
     tbb::task_arena arena(threads);
@@ -242,15 +317,14 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
     result.nodes.resize(tree.nodes.size());
     const std::vector<Id> order = postOrder(tree);
     fillFrames(scene, tree, params, order, result.nodes);
-    std::vector<std::uint64_t> keys;
-    arena.execute([&] { keys = computeBakeKeys(scene, tree, params); });
+    arena.execute([&] { leafKeys(scene, tree, order, result.nodes); });
     for (Id id : order) {
-        result.nodes[id].key = keys[id];
         if (!tree.nodes[id].isLeaf()) ++result.innerNodes;
     }
 
-    BakeRun run{scene, tree, params, progress, ProxyCache(params.cacheDir), result, {}};
+    BakeRun run{scene, tree, params, progress, ProxyCache(params.cacheDir), result, {}, {}};
     run.pending = std::make_unique<std::atomic<int>[]>(tree.nodes.size());
+    run.standIns.resize(tree.nodes.size());
     std::vector<Id> ready;
     for (Id id : order) {
         const ClusterNode& node = tree.nodes[id];
@@ -270,11 +344,17 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
 
     result.baked = run.baked.load();
     result.reused = run.reused.load();
+    result.dissolved = run.dissolved.load();
     for (Id id : order) {
+        NodeBake& nb = result.nodes[id];
         if (tree.nodes[id].isLeaf()) continue;
-        result.inputTriangles += result.nodes[id].inputTriangles;
-        result.proxyTriangles += result.nodes[id].proxy.triangleCount();
-        result.proxyVertices += result.nodes[id].proxy.vertexCount();
+        result.inputTriangles += nb.inputTriangles;
+        if (nb.dissolved || !nb.hasProxy) {
+            nb.proxy = ProxyMesh{nb.proxy.origin, {}, {}, {}, {}};
+            continue;
+        }
+        result.proxyTriangles += nb.proxy.triangleCount();
+        result.proxyVertices += nb.proxy.vertexCount();
     }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

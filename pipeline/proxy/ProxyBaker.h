@@ -1,6 +1,23 @@
 // Proxy baking for a whole cluster tree (thesis 5.3, "Hierarchical Proxy Mesh Processor"):
-// every inner node gets a proxy made from its children's proxies (original meshes for leaf
-// children), bottom-up, in parallel.
+// every inner node gets a proxy made from its children's representations (their proxies, or
+// the original meshes of leaf children), bottom-up, in parallel.
+//
+// Proxy economy (DESIGN.md): a node keeps its proxy only when it pays for itself, proxy
+// triangles <= proxyRatio x the triangles of what it replaces. A node whose proxy does not pay
+// is dissolved: its parent is baked from the dissolved node's inputs instead (its children
+// move up), so the parent is judged with its wider set of children. Locked nodes are never
+// dissolved. Summed over the tree, each proxy is at most rho times the representations of its
+// children and every representation has one parent, so all proxies together hold at most
+// rho / (1 - rho) of the original triangles (rho = 0.5: at most 100 %). The root has nothing to
+// hang its children from: when its proxy does not pay it keeps no proxy (hasProxy false) and
+// is always refined. bakeProxies records the decisions (NodeBake::dissolved) on the input tree;
+// compactDissolved (ProxyEconomy.h) removes the dissolved nodes.
+//
+// Frames: a node's proxy is baked in the node's own frame (positions relative to its box
+// centre, every input placed by its offset from that centre, quantised to a power-of-two grid
+// below 1/1024 of the budget) and keyed by that content, so clusters that are translated
+// copies of each other (a plant built from repeated modules) bake to bit-identical proxies:
+// the second is a cache hit, also within one run without a disk cache.
 //
 // Scheduling: a dependency-counting task graph on TBB (a node's task is spawned by the last of
 // its inner children to finish, leaves are ready at once), run in a task_arena of
@@ -8,8 +25,10 @@
 // Determinism: a node's proxy is a pure function of its inputs and parameters, its inputs are
 // gathered in child order, so the result is bit-identical for any thread count and any
 // cache state (a cached proxy is the exact bytes of a baked one).
-// Cache: see ProxyCache.h; keys are computed up front (Merkle hash over the tree), a node whose
-// key is in the cache is reused without being baked.
+// Cache: see ProxyCache.h; a node's key is a Merkle hash of the method, its parameters, the
+// node's budget and the keys and offsets of its inputs, computed when the node is ready (its
+// inputs depend on the decisions below it). A node whose key is in the cache, or was baked
+// earlier in the same run, is reused without being baked.
 // Progress: stage "bake", done/total = inner nodes finished/all, detail
 // "baked N, reused M, T proxy triangles"; called from worker threads.
 // Cancellation: each node checks the flag before it starts and the remesher checks it while
@@ -41,16 +60,22 @@ struct BakeParams {
     std::filesystem::path cacheDir; // empty = no disk cache
     DecimateOptions decimate;       // tuning, part of the cache key
     RemeshOptions remesh;           // tuning, part of the cache key
+    // rho of the proxy economy: a proxy is kept when its triangles are at most this fraction of
+    // its inputs' triangles; >= 1 keeps every proxy (the tree as clustered). Not part of the
+    // cache key (the decision is made on the cached proxy).
+    double proxyRatio = 0.5;
 };
 
 struct NodeBake {
     double diameter = 0.0;          // metres (ErrorBudget.h nodeDiameter)
     double errorBudget = 0.0;       // e = t * diameter / S, metres
     double switchDistance = 0.0;    // metres
-    std::uint64_t key = 0;          // cache key (leaves: key of their instance)
-    bool reused = false;            // inner nodes: taken from the cache
-    std::size_t inputTriangles = 0; // inner nodes: aggregated children
-    ProxyMesh proxy;                // inner nodes only
+    std::uint64_t key = 0;          // cache key (leaves: key of their mesh, material, rotation)
+    bool reused = false;            // inner nodes: taken from the cache (or this run)
+    bool dissolved = false;         // inner nodes: the proxy did not pay (see above)
+    bool hasProxy = true;           // inner nodes: false for a root whose proxy did not pay
+    std::size_t inputTriangles = 0; // inner nodes: the representations it was baked from
+    ProxyMesh proxy;                // inner nodes with a proxy only
 };
 
 struct BakeResult {
@@ -58,18 +83,17 @@ struct BakeResult {
     std::size_t innerNodes = 0;
     std::size_t baked = 0;
     std::size_t reused = 0;
-    std::size_t inputTriangles = 0; // sum over inner nodes
-    std::size_t proxyTriangles = 0; // sum over inner nodes
+    std::size_t dissolved = 0;      // inner nodes dissolved by the proxy economy
+    std::size_t inputTriangles = 0; // sum over every baked node (the bake's work)
+    std::size_t proxyTriangles = 0; // sum over the kept proxies
     std::size_t proxyVertices = 0;
     double seconds = 0.0;
 };
 
+// Bakes every inner node of `tree` and makes the economy's decisions; result.nodes is parallel
+// to tree.nodes (dissolved nodes keep no proxy). See ProxyEconomy.h for the tree without them.
 BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
                        const Progress& progress = {});
-
-// The cache key of every node (what bakeProxies uses), without baking.
-std::vector<std::uint64_t> computeBakeKeys(const Scene& scene, const ClusterTree& tree,
-                                           const BakeParams& params);
 
 // One node's proxy from its already aggregated input (the per-node step of bakeProxies).
 // For `remesh` this is the smaller of the shell and the `decimate` proxy (both within the

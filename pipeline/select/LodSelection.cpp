@@ -7,8 +7,9 @@
 
 namespace hlod {
 
-SelectionTree::SelectionTree(const ClusterTree& tree, std::vector<std::uint64_t> nodeTriangles)
-    : triangles_(std::move(nodeTriangles)), root_(tree.root) {
+SelectionTree::SelectionTree(const ClusterTree& tree, std::vector<std::uint64_t> nodeTriangles,
+                             bool refineRootAlways)
+    : triangles_(std::move(nodeTriangles)), root_(tree.root), refineRoot_(refineRootAlways) {
     const std::size_t n = tree.nodes.size();
     triangles_.resize(n, 0);
     parent_.resize(n);
@@ -64,6 +65,7 @@ bool NodeClassifier::visible(Id n) const {
 }
 
 bool NodeClassifier::tooBig(Id n) const {
+    if (tree_.refineAlways(n)) return true;
     const double d = glm::length(tree_.center(n) - eye_);
     return d < tree_.radius(n) * sizeFactor_;
 }

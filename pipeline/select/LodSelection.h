@@ -25,7 +25,11 @@ namespace hlod {
 class SelectionTree {
 public:
     // `nodeTriangles[i]`: what drawing node i costs (its proxy, or its leaf mesh).
-    SelectionTree(const ClusterTree& tree, std::vector<std::uint64_t> nodeTriangles);
+    // `refineAlways`: the root when it has no proxy (the proxy economy's root whose proxy did
+    // not pay, ProxyBaker.h): never drawn as itself, always refined while visible. Only the
+    // root may be flagged (a flag elsewhere would break the ancestor-closed open set).
+    SelectionTree(const ClusterTree& tree, std::vector<std::uint64_t> nodeTriangles,
+                  bool refineRootAlways = false);
 
     std::size_t size() const { return parent_.size(); }
     Id root() const { return root_; }
@@ -36,6 +40,7 @@ public:
     const glm::dvec3& center(Id n) const { return center_[n]; }
     double radius(Id n) const { return radius_[n]; }
     std::uint64_t triangles(Id n) const { return triangles_[n]; }
+    bool refineAlways(Id n) const { return refineRoot_ && n == root_; }
 
 private:
     std::vector<Id> parent_;
@@ -45,6 +50,7 @@ private:
     std::vector<double> radius_;
     std::vector<std::uint64_t> triangles_;
     Id root_ = 0;
+    bool refineRoot_ = false;
 };
 
 struct SelectionParams {
@@ -63,7 +69,8 @@ class NodeClassifier {
 public:
     NodeClassifier(const SelectionTree& tree, const Camera& camera, const SelectionParams& p);
     bool visible(Id n) const;
-    bool tooBig(Id n) const; // projected diameter > S (or the eye is inside the sphere)
+    // Projected diameter > S (or the eye is inside the sphere), or a node without a proxy.
+    bool tooBig(Id n) const;
     bool open(Id n) const;   // visible, has children and too big: recurse into it
 
 private:

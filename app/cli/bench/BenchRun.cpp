@@ -17,6 +17,7 @@
 #include "pipeline/eval/Plot.h"
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/DlodChain.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/select/CameraPath.h"
 #include "pipeline/select/LodSelection.h"
 
@@ -207,7 +208,8 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                     if (tris[n] > 0) c.nodeDrawable[n] = renderer.addProxy(c.layer, proxy);
                 }
             }
-            c.selection = std::make_unique<SelectionTree>(tree, std::move(tris));
+            c.selection = std::make_unique<SelectionTree>(
+                tree, std::move(tris), rootHasNoProxy(tree, c.build->bake));
             c.cache = std::make_unique<FrontCache>(*c.selection);
         } else {
             c.instanceDrawables.resize(nInst);
