@@ -72,7 +72,8 @@ void parseSize(const std::string& text, int& w, int& h) {
 int runBench(const CommandArgs& argv) {
     std::set<std::string> valueOptions{"--out",     "-o",        "--frames",
                                        "--size",    "--configs", "--path",
-                                       "--threads", "--shading", "--screen-size"};
+                                       "--threads", "--shading", "--screen-size",
+                                       "--proxy-ratio"};
     valueOptions.insert(kImportOptions.begin(), kImportOptions.end());
     const Args args(argv, valueOptions, {"--no-cache"});
 #ifndef HLOD_HAVE_VTK
@@ -88,6 +89,7 @@ int runBench(const CommandArgs& argv) {
     parseSize(args.value("--size", "640x360"), o.width, o.height);
     o.configs = parseConfigs(args.value("--configs", "all"));
     o.screenSize = args.number("--screen-size", o.screenSize, 1.0, 100000.0);
+    o.proxyRatio = args.number("--proxy-ratio", o.proxyRatio, 0.05, 1.0);
     if (auto p = args.value("--path")) o.pathFile = *p;
     o.threads = args.integer("--threads", 0, 0, 1024);
     const std::string shading = args.value("--shading", "geometry");

@@ -3,6 +3,7 @@
 #include "pipeline/cluster/Cluster.h"
 
 #include "pipeline/cluster/ClusterDriver.h"
+#include "pipeline/cluster/LevelGrowth.h"
 #include "pipeline/cluster/LevelMerger.h"
 #include "pipeline/cluster/OctreeClusterer.h"
 #include "pipeline/cluster/OriginalHierarchyClusterer.h"
@@ -14,11 +15,15 @@ ClusterTree buildClusterTree(const Scene& scene, const ClusterParams& params,
     validateConstraints(params, scene.instances.size());
     switch (params.volume) {
     case VolumeType::Sphere:
-        return buildConstrainedTree(scene, params, CostModel(VolumeType::Sphere, 0.0), mergeLevels,
-                                    progress);
+        return coarsenLevels(buildConstrainedTree(scene, params,
+                                                  CostModel(VolumeType::Sphere, 0.0), mergeLevels,
+                                                  progress),
+                             params.levelGrowth);
     case VolumeType::Aabb:
-        return buildConstrainedTree(scene, params, CostModel(VolumeType::Aabb, params.k),
-                                    mergeLevels, progress);
+        return coarsenLevels(buildConstrainedTree(scene, params,
+                                                  CostModel(VolumeType::Aabb, params.k),
+                                                  mergeLevels, progress),
+                             params.levelGrowth);
     case VolumeType::Octree:
         // The baselines have no cost of their own: their nodes are boxes, so fill and cost are
         // reported with the AABB model without the proportion term (k = 0).

@@ -15,7 +15,10 @@ namespace hlod {
 struct ClusterParams {
     VolumeType volume = VolumeType::Sphere;
     double k = 1.0;      // AABB proportion constraint exponent (thesis evaluates 0, 1, 2)
-    int maxChildren = 8; // cap on children per inner node (>= 2)
+    int maxChildren = 8; // cap on children per merge (>= 2); levelGrowth may widen nodes later
+    // Sphere and AABB trees: levels thinner than this are dissolved, so that a parent is at
+    // least this many times wider than its inner children (LevelGrowth.h); 1 keeps the merges.
+    double levelGrowth = 2.0;
     // Hand-edit constraints: each group is a set of instance ids clustered as one locked unit
     // (kept whole); excluded instances become their own leaf directly under the root.
     std::vector<std::vector<Id>> lockedGroups;

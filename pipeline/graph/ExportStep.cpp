@@ -18,7 +18,8 @@ BuildInfo makeBuildInfo(const BuildInputs& in, bool dlod, double* dlodSeconds) {
     info.bake = in.bakeParams;
     info.clusterParameters = {{"volume", toString(in.cluster.volume)},
                               {"k", in.cluster.k},
-                              {"max_children", in.cluster.maxChildren}};
+                              {"max_children", in.cluster.maxChildren},
+                              {"level_growth", in.cluster.levelGrowth}};
     if (!in.edits.empty()) info.clusterParameters["hand_edits"] = handEditsToJson(in.edits);
     info.statistics.push_back(originalStats(in.scene));
     if (dlod) {

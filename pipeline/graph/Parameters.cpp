@@ -74,8 +74,18 @@ void addImportAndCluster(std::vector<ParamDecl>& v) {
                             "--k"),
                        0.0, 16.0, true));
     v.push_back(ranged(decl("max_children", "Max children", T::Int, N::Cluster, cp.maxChildren, "",
-                            "Largest number of children of one cluster", "--max-children"),
+                            "Largest number of children one merge gives a cluster (level growth "
+                            "and the proxy economy may widen clusters afterwards)",
+                            "--max-children"),
                        2, 1024));
+    v.push_back(ranged(decl("level_growth", "Level growth", T::Double, N::Cluster,
+                            cp.levelGrowth, "× diameter",
+                            "Sphere and AABB trees: a cluster is at least this many times wider "
+                            "than the clusters below it (thinner levels are dissolved), so each "
+                            "proxy's error budget grows enough to drop triangles; 1 keeps every "
+                            "merge",
+                            "--level-growth"),
+                       1.0, 16.0));
 }
 
 void addBakeAndExport(std::vector<ParamDecl>& v) {
@@ -423,6 +433,7 @@ ClusterParams clusterParamsFrom(const ParamValues& v) {
     p.volume = volumeTypeFromString(paramText(v, "volume"));
     p.k = paramNumber(v, "k");
     p.maxChildren = paramInt(v, "max_children");
+    p.levelGrowth = paramNumber(v, "level_growth");
     return p;
 }
 
@@ -458,6 +469,7 @@ ParamValues paramsFrom(const ClusterParams& p) {
     v["volume"] = std::string(toString(p.volume));
     v["k"] = p.k;
     v["max_children"] = p.maxChildren;
+    v["level_growth"] = p.levelGrowth;
     return v;
 }
 

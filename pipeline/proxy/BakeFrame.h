@@ -1,10 +1,11 @@
 // The frame a node's proxy is baked in, quantised so that translated copies of a cluster bake
 // to bit-identical proxies (issue "A compact package": rigid copies share one proxy).
 //
-// A node's proxy lives relative to its box centre. Its inputs are placed by their offsets from
-// that centre (an instance's translation, a child proxy's origin). Two copies of a cluster
-// compute these offsets from different world coordinates, so they differ in the last bits;
-// rounded to a power-of-two grid they become equal, and so do the aggregated floats, the
+// A node's proxy lives relative to its first input's position (an instance's translation, a
+// child proxy's origin, in double). Its inputs are placed by their offsets from that origin.
+// Two copies of a cluster compute these offsets from different world coordinates, so they may
+// differ in the last bits; rounded to a power-of-two grid they become equal, and so do the
+// aggregated floats, the
 // simplification and the cache key. The grid is the largest power of two at most 1/1024 of
 // the node's error budget, so rounding moves an input by at most sqrt(3)/2048 of the budget
 // (far below what the deviation check can tell apart). The budget itself is rounded down to

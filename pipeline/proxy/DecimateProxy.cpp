@@ -1,13 +1,47 @@
-// Quadric decimation proxy (Garland & Heckbert 1997 via meshoptimizer), see DecimateProxy.h.
+// Error-bounded quadric decimation proxy, see DecimateProxy.h.
 #include "pipeline/proxy/DecimateProxy.h"
+
+#include <cmath>
 
 #include <meshoptimizer.h>
 
-#include "pipeline/proxy/PartwiseSimplify.h"
+#include "pipeline/proxy/BoundedSimplify.h"
+#include "pipeline/proxy/CoveredParts.h"
+#include "pipeline/proxy/SmallParts.h"
 #include "pipeline/proxy/ProxyFinish.h"
 #include "pipeline/proxy/Weld.h"
 
 namespace hlod {
+
+namespace {
+
+// The simplified triangles of the parts CoveredParts.h keeps.
+std::vector<std::uint32_t> dropCoveredParts(const ProxyMesh& input,
+                                            std::span<const glm::vec3> simplifiedPositions,
+                                            std::vector<std::uint32_t> simplified, double limit) {
+    std::vector<std::uint32_t> part = componentRoots(input);
+    std::vector<std::uint32_t> number(part.size(), 0xffffffffu);
+    std::size_t parts = 0;
+    for (std::uint32_t v : input.indices) {
+        std::uint32_t& n = number[part[v]];
+        if (n == 0xffffffffu) n = static_cast<std::uint32_t>(parts++);
+    }
+    for (std::uint32_t v = 0; v < part.size(); ++v)
+        part[v] = number[part[v]] == 0xffffffffu ? 0 : number[part[v]];
+    const std::vector<std::uint8_t> keep =
+        keepUncoveredParts(input.positions, input.indices, simplifiedPositions, simplified, part,
+                           parts, limit);
+    std::size_t out = 0;
+    for (std::size_t t = 0; t + 2 < simplified.size(); t += 3) {
+        if (!keep[part[simplified[t]]]) continue;
+        for (int k = 0; k < 3; ++k)
+            simplified[out++] = simplified[t + k];
+    }
+    simplified.resize(out);
+    return simplified;
+}
+
+} // namespace
 
 std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxError) {
     if (mesh.indices.empty()) return {};
@@ -26,9 +60,15 @@ std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxErro
 
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options) {
     const auto e = static_cast<float>(maxError);
-    weldVertices(input, e * options.weldFraction);
-    // Parts below e are dropped (SmallParts.h) in the same pass over the connected parts.
-    input.indices = simplifyPartsWithinError(input, maxError * options.simplifyFraction, e);
+    const float wf = options.weldFraction;
+    weldCorners(input, WeldOptions{e * wf, false, true});
+    dropSmallParts(input, e);
+    const double limit = maxError * (1.0 - std::sqrt(3.0) * wf);
+    BoundedSimplifyResult simplified =
+        simplifyWithinDeviation(input.positions, input.indices, limit);
+    input.indices =
+        dropCoveredParts(input, simplified.positions, std::move(simplified.indices), limit);
+    input.positions = std::move(simplified.positions);
     compactMesh(input);
     finishProxy(input);
     return input;

@@ -1,19 +1,20 @@
-// `decimate` proxies: the aggregated children welded, then split into connected parts; parts
-// smaller than the error budget are dropped and the others simplified one by one with quadric
-// edge collapse (Garland & Heckbert 1997, as implemented by meshoptimizer's meshopt_simplify)
-// until the next collapse would exceed the target (PartwiseSimplify.h).
+// `decimate` proxies: the aggregated children welded, simplified within the error budget,
+// and cleared of parts the rest already stands for.
 //
-// Error: meshoptimizer's own measure is an area-weighted RMS distance to the planes of the
-// collapsed triangles, which real deviations exceed 1.5-3x on curved surfaces, so it is not
-// used as the bound. Every simplified part is checked with a sampled two-sided Hausdorff test
-// (DeviationCheck.h) against the part's welded input at the full check limit, and a failing
-// part is redone with a smaller meshoptimizer target or kept as it is; so the proxy stays within
-// `maxError` metres of its input (check limit simplifyFraction * maxError plus at most the weld
-// displacement, a cell diagonal sqrt(3) * weldFraction * maxError). The one exception is the
-// dropped parts: their bounding-box diagonal is below maxError, so each covers less than a
-// pixel at the switch point (SmallParts.h), but nothing of the proxy needs to be near them.
-// Topology is kept: holes and thin parts larger than the budget survive, open borders only
-// collapse along themselves.
+// Steps:
+// 1. Weld (Weld.h weldCorners): corners within weldFraction * maxError merge whatever their
+//    colour, but the two sides of a two-sided sheet stay apart (faces more than 120 degrees
+//    apart), so that back-to-back faces do not form zero-volume pillows the simplifier could
+//    slide anywhere at no cost. Moves a vertex by at most sqrt(3) * weldFraction * maxError.
+// 2. Parts whose bounding-box diagonal is below maxError go (SmallParts.h: less than a pixel at
+//    the switch point).
+// 3. Simplification within the rest of the budget, (1 - sqrt(3) * weldFraction) * maxError,
+//    certified both ways (BoundedSimplify.h: quadric edge collapses, Garland & Heckbert 1997,
+//    each checked against the input, repaired by locks until the Hausdorff certificate holds).
+// 4. Parts within that limit of the parts kept before them go (CoveredParts.h: the back face of
+//    a sheet, a kerb along a road).
+// Guarantee: the proxy lies within maxError of its input and every point of the input lies
+// within maxError of the proxy, except the parts of step 2.
 // Output: finished proxy (normals, render layout), never more triangles than the input.
 // Deterministic: single-threaded, depends only on the input.
 #pragma once
@@ -23,16 +24,15 @@
 namespace hlod {
 
 struct DecimateOptions {
-    // Weld cell size as a fraction of the error budget (see Weld.h).
+    // Weld tolerance as a fraction of the error budget (see Weld.h); the simplifier gets the
+    // rest of the budget, 1 - sqrt(3) * weldFraction (0.973 at 1/64).
     float weldFraction = 1.0f / 64.0f;
-    // Fraction of the budget left to the simplifier (the rest covers welding: a cell diagonal
-    // is sqrt(3) / 64 = 0.027 of the budget).
-    float simplifyFraction = 0.97f;
 };
 
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options = {});
 
-// One meshopt_simplify call at meshoptimizer's own (RMS) error measure, no check.
+// One meshopt_simplify call at meshoptimizer's own (RMS) error measure, no check (the remesh
+// method's quick pass).
 std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxError);
 
 } // namespace hlod

@@ -27,7 +27,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 4;
+constexpr std::uint64_t kBakeFormatVersion = 7;
 
 // Children before parents, only nodes reachable from the root.
 std::vector<Id> postOrder(const ClusterTree& tree) {
@@ -74,7 +74,6 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
     switch (params.method) {
     case ProxyMethod::Decimate:
         h.addValue(params.decimate.weldFraction);
-        h.addValue(params.decimate.simplifyFraction);
         break;
     case ProxyMethod::Remesh:
         h.addValue(params.remesh.voxelFraction);
@@ -84,7 +83,6 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
         h.addValue(params.remesh.maxVoxelsPerAxis);
         h.addValue(params.remesh.decimateBelowTriangles);
         h.addValue(params.decimate.weldFraction);
-        h.addValue(params.decimate.simplifyFraction);
         break;
     case ProxyMethod::Sloppy:
         break;
@@ -202,25 +200,29 @@ struct BakeRun {
         hashOptions(h, params);
         h.addValue(nb.errorBudget);
         h.addValue(static_cast<std::uint64_t>(inputs.size()));
-        std::vector<AggregatePart> parts;
-        parts.reserve(inputs.size());
-        for (Id r : inputs) {
-            const ClusterNode& node = tree.nodes[r];
-            AggregatePart part;
-            glm::dvec3 at;
+        std::vector<AggregatePart> parts(inputs.size());
+        std::vector<glm::dvec3> at(inputs.size());
+        bool placed = false;
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            const ClusterNode& node = tree.nodes[inputs[i]];
             if (node.isLeaf()) {
-                part.instance = node.instance;
-                at = node.instance == kNoId
-                         ? nb.proxy.origin
-                         : glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
+                parts[i].instance = node.instance;
+                if (node.instance == kNoId) continue;
+                at[i] = glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
             } else {
-                part.proxy = &result.nodes[r].proxy;
-                at = part.proxy->origin;
+                parts[i].proxy = &result.nodes[inputs[i]].proxy;
+                at[i] = parts[i].proxy->origin;
             }
-            part.offset = quantizeOffset(at - nb.proxy.origin, grid);
-            h.addValue(result.nodes[r].key);
-            h.addValue(*part.offset);
-            parts.push_back(part);
+            // The frame's origin is the first input's: offsets between the inputs of translated
+            // copies are then differences of the same double values, equal to the last bits,
+            // where box centres computed from float bounds differ (BakeFrame.h).
+            if (!placed) nb.proxy.origin = at[i], placed = true;
+        }
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            const bool empty = parts[i].proxy == nullptr && parts[i].instance == kNoId;
+            parts[i].offset = quantizeOffset(empty ? glm::dvec3(0.0) : at[i] - nb.proxy.origin, grid);
+            h.addValue(result.nodes[inputs[i]].key);
+            h.addValue(*parts[i].offset);
         }
         nb.key = h.digest();
         return parts;

@@ -13,9 +13,9 @@
 // is always refined. bakeProxies records the decisions (NodeBake::dissolved) on the input tree;
 // compactDissolved (ProxyEconomy.h) removes the dissolved nodes.
 //
-// Frames: a node's proxy is baked in the node's own frame (positions relative to its box
-// centre, every input placed by its offset from that centre, quantised to a power-of-two grid
-// below 1/1024 of the budget) and keyed by that content, so clusters that are translated
+// Frames: a node's proxy is baked in the node's own frame (positions relative to its first
+// input's position, every input placed by its offset from there, quantised to a power-of-two
+// grid below 1/1024 of the budget) and keyed by that content, so clusters that are translated
 // copies of each other (a plant built from repeated modules) bake to bit-identical proxies:
 // the second is a cache hit, also within one run without a disk cache.
 //

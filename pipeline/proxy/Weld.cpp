@@ -122,54 +122,112 @@ private:
 } // namespace
 
 void weldVertices(ProxyMesh& mesh, float tolerance) {
+    weldCorners(mesh, WeldOptions{tolerance, true, false});
+}
+
+namespace {
+
+// The grid probe of weldCorners: the first representative within `tolerance` of p (on every
+// axis) filed under a cell around p with `colorKey`, that `accept` agrees to; kUnset if none.
+template <class Accept>
+std::uint32_t findTwin(const KeyTable& table, const std::vector<std::uint32_t>& next,
+                       const std::vector<glm::vec3>& repPosition, const glm::vec3& p,
+                       float tolerance, double inverseCell, std::uint32_t colorKey,
+                       Accept&& accept) {
+    const glm::vec3 lo = p - glm::vec3(tolerance), hi = p + glm::vec3(tolerance);
+    const std::int64_t x0 = cellOf(lo.x, inverseCell), x1 = cellOf(hi.x, inverseCell);
+    const std::int64_t y0 = cellOf(lo.y, inverseCell), y1 = cellOf(hi.y, inverseCell);
+    const std::int64_t z0 = cellOf(lo.z, inverseCell), z1 = cellOf(hi.z, inverseCell);
+    for (std::int64_t x = x0; x <= x1; ++x) {
+        for (std::int64_t y = y0; y <= y1; ++y) {
+            for (std::int64_t z = z0; z <= z1; ++z) {
+                for (std::uint32_t r = table.head(CellKey{x, y, z, colorKey}); r != kUnset;
+                     r = next[r]) {
+                    const glm::vec3 delta = glm::abs(repPosition[r] - p);
+                    if (delta.x <= tolerance && delta.y <= tolerance && delta.z <= tolerance &&
+                        accept(r))
+                        return r;
+                }
+            }
+        }
+    }
+    return kUnset;
+}
+
+} // namespace
+
+void weldCorners(ProxyMesh& mesh, const WeldOptions& options) {
     const std::size_t n = mesh.positions.size();
     if (n == 0) return;
+    const float tolerance = options.tolerance;
     // Cells four times the tolerance wide: the vertices within `tolerance` of a point lie in at
     // most two cells per axis (a vertex near a cell wall still finds its twin in the next
     // cell), and in one cell for the half of the positions away from the walls, so a vertex
     // probes 1.5^3 = 3.4 cells on average (2^3 = 8 with cells twice the tolerance wide).
     const double inverseCell = tolerance > 0.0f ? 0.25 / static_cast<double>(tolerance) : 0.0;
     KeyTable table(n);
-    std::vector<std::uint32_t> representative, next, remap(n, kUnset);
+    std::vector<std::uint32_t> representative, next;
+    std::vector<glm::vec3> repPosition, repNormal;
     representative.reserve(n);
     next.reserve(n);
-    for (std::uint32_t v : mesh.indices) {
-        if (remap[v] != kUnset) continue;
+    // Corner-level remap; without sides every corner of a vertex welds alike (one lookup).
+    std::vector<std::uint32_t> vertexRep(n, kUnset), cornerRep(mesh.indices.size());
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        const std::uint32_t v = mesh.indices[i];
+        if (!options.sides && vertexRep[v] != kUnset) {
+            cornerRep[i] = vertexRep[v];
+            continue;
+        }
         CellKey key = keyOf(mesh, v, inverseCell);
-        std::uint32_t found = kUnset;
-        if (inverseCell == 0.0) {
-            found = table.head(key);
-        } else {
-            const glm::vec3& p = mesh.positions[v];
-            const glm::vec3 lo = p - glm::vec3(tolerance), hi = p + glm::vec3(tolerance);
-            const std::int64_t x0 = cellOf(lo.x, inverseCell), x1 = cellOf(hi.x, inverseCell);
-            const std::int64_t y0 = cellOf(lo.y, inverseCell), y1 = cellOf(hi.y, inverseCell);
-            const std::int64_t z0 = cellOf(lo.z, inverseCell), z1 = cellOf(hi.z, inverseCell);
-            for (std::int64_t x = x0; x <= x1 && found == kUnset; ++x) {
-                for (std::int64_t y = y0; y <= y1 && found == kUnset; ++y) {
-                    for (std::int64_t z = z0; z <= z1 && found == kUnset; ++z) {
-                        const CellKey probe{x, y, z, key.color};
-                        for (std::uint32_t r = table.head(probe); r != kUnset; r = next[r]) {
-                            const glm::vec3 delta = glm::abs(mesh.positions[representative[r]] - p);
-                            if (delta.x <= tolerance && delta.y <= tolerance &&
-                                delta.z <= tolerance) {
-                                found = r;
-                                break;
-                            }
-                        }
-                    }
-                }
+        if (!options.byColour) key.color = 0;
+        glm::vec3 side(0.0f);
+        if (options.sides) {
+            const std::size_t t = i - i % 3;
+            if (t + 2 < mesh.indices.size()) {
+                const glm::vec3 &a = mesh.positions[mesh.indices[t]],
+                                &b = mesh.positions[mesh.indices[t + 1]],
+                                &c = mesh.positions[mesh.indices[t + 2]];
+                const glm::vec3 f = glm::cross(b - a, c - a);
+                const float len = glm::length(f);
+                if (len > 0.0f) side = f / len;
             }
+        }
+        // Two sides of a sheet: faces more than 120 degrees apart keep their own vertices.
+        auto sameSide = [&](std::uint32_t r) { return glm::dot(repNormal[r], side) > -0.5f; };
+        std::uint32_t found = kUnset;
+        const glm::vec3& p = mesh.positions[v];
+        if (inverseCell == 0.0) {
+            for (std::uint32_t r = table.head(key); r != kUnset && found == kUnset; r = next[r])
+                if (!options.sides || sameSide(r)) found = r;
+        } else {
+            found = findTwin(table, next, repPosition, p, tolerance, inverseCell, key.color,
+                             [&](std::uint32_t r) { return !options.sides || sameSide(r); });
         }
         if (found == kUnset) {
             found = static_cast<std::uint32_t>(representative.size());
             representative.push_back(v);
+            repPosition.push_back(p);
+            repNormal.push_back(side);
             next.push_back(kUnset);
             table.add(key, found, next);
         }
-        remap[v] = found;
+        cornerRep[i] = found;
+        vertexRep[v] = found;
     }
-    rebuild(mesh, remap, representative);
+    ProxyMesh out;
+    out.origin = mesh.origin;
+    out.positions = std::move(repPosition);
+    const bool hasColors = mesh.colors.size() == mesh.positions.size();
+    out.colors.reserve(representative.size());
+    for (std::uint32_t v : representative)
+        out.colors.push_back(hasColors ? mesh.colors[v] : glm::u8vec4(255));
+    out.indices.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < cornerRep.size(); t += 3) {
+        const std::uint32_t a = cornerRep[t], b = cornerRep[t + 1], c = cornerRep[t + 2];
+        if (a == b || b == c || a == c) continue;
+        out.indices.insert(out.indices.end(), {a, b, c});
+    }
+    mesh = std::move(out);
 }
 
 void compactMesh(ProxyMesh& mesh) {

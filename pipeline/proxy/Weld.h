@@ -19,6 +19,19 @@ namespace hlod {
 
 void weldVertices(ProxyMesh& mesh, float tolerance);
 
+// The general form. `byColour` false welds vertices of any colour (the first one's colour
+// stays). `sides` welds triangle corners instead of vertices: a corner joins a representative
+// only when its face's normal is within 120 degrees of the normal of the face that made the
+// representative, so the front and back faces of a two-sided sheet (a wall modelled as both
+// faces over the same corners) stay two open sheets instead of one closed zero-volume pillow,
+// whose every edge would look interior to a simplifier (QuadricSimplify.h).
+struct WeldOptions {
+    float tolerance = 0.0f;
+    bool byColour = true;
+    bool sides = false;
+};
+void weldCorners(ProxyMesh& mesh, const WeldOptions& options);
+
 // Drops triangles with two equal corners and vertices no triangle uses (keeps first-use order).
 void compactMesh(ProxyMesh& mesh);
 

@@ -123,6 +123,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     std::vector<GeometryStats> stats{originalStats(scene)};
     BakeParams bake;
     bake.screen.screenSize = o.screenSize;
+    bake.proxyRatio = o.proxyRatio;
     bake.threads = o.threads;
     bake.cacheDir = o.cacheDir;
     for (Config& c : configs) {
