@@ -140,7 +140,8 @@ int materialIndex(Doc& doc, const GlbMesh& m) {
         }
         pbr["baseColorTexture"] = {{"index", texture}};
     }
-    nlohmann::json mat = {{"name", m.name}, {"pbrMetallicRoughness", pbr}};
+    nlohmann::json mat = {{"name", m.materialName.empty() ? m.name : m.materialName},
+                          {"pbrMetallicRoughness", pbr}};
     if (c.a < 1.0f) mat["alphaMode"] = "BLEND";
     nlohmann::json key = mat;
     key.erase("name"); // meshes of the same look share a material whatever their names
@@ -234,7 +235,8 @@ int indexAccessor(Doc& doc, const GlbMesh& m, bool meshopt) {
 
 // The node's TRS composed with its mesh's dequantization: frame = T R S (offset + step q).
 nlohmann::json nodeJson(const GlbNode& node, int mesh, const Dequantization& dq) {
-    nlohmann::json j = {{"name", node.name}};
+    nlohmann::json j = nlohmann::json::object();
+    if (!node.name.empty()) j["name"] = node.name;
     Trs trs = node.trs;
     if (mesh >= 0) {
         j["mesh"] = mesh;
@@ -266,12 +268,12 @@ Doc buildDoc(const GlbScene& scene) {
             meshopt ? meshoptAttributes(doc, m, dequant[i]) : plainAttributes(doc, m);
         const int indices = indexAccessor(doc, m, meshopt);
         const int material = materialIndex(doc, m);
-        gltf["meshes"].push_back({{"name", m.name},
-                                  {"primitives",
+        gltf["meshes"].push_back({{"primitives",
                                    {{{"attributes", std::move(attributes)},
                                      {"indices", indices},
                                      {"material", material},
                                      {"mode", 4}}}}});
+        if (!m.name.empty()) gltf["meshes"].back()["name"] = m.name;
         meshIndex[i] = static_cast<int>(gltf["meshes"].size()) - 1;
     }
     nlohmann::json roots = nlohmann::json::array();

@@ -49,6 +49,7 @@ struct GlbMesh {
     std::span<const glm::u8vec4> colors; // empty or one per position (linear RGBA)
     std::span<const std::uint32_t> indices;
     glm::vec4 baseColor{1.0f};
+    std::string materialName; // empty: the mesh's name
     // Optional base colour texture (PNG or JPEG bytes, see TextureImage.h), embedded in the BIN
     // chunk and sampled with TEXCOORD_0 (repeat wrap, linear filtering). Ignored without uvs.
     std::span<const std::uint8_t> image;
