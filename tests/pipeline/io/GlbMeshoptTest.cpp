@@ -154,3 +154,20 @@ TEST(GlbMeshopt, MissingExternalBufferIsNamed) {
         test::problemOf([&] { importGltf(dir / "scene.gltf", ImportOptions{}); });
     EXPECT_NE(problem.find("buffer 0 'scene.bin' is missing"), std::string::npos) << problem;
 }
+
+TEST(GlbMeshopt, GltfpackStyleSceneWithExternalBufferImports) {
+    // The same compressed scene as .gltf + .bin, as gltfpack writes it: the importer reads the
+    // buffer next to the scene and records it as a file the scene pulled in.
+    const Quad q;
+    const GlbChunks c = splitGlb(encodeGlb(twoQuads(q, GlbCompression::Meshopt)), "q.glb");
+    nlohmann::json j = nlohmann::json::parse(c.json);
+    j["buffers"][0]["uri"] = "q.bin";
+    test::TempDir dir;
+    test::writeFile(dir / "q.gltf", j.dump());
+    test::writeFile(dir / "q.bin", std::string(c.bin.begin(), c.bin.end()));
+    const Scene s = importGltf(dir / "q.gltf", ImportOptions{});
+    EXPECT_EQ(s.instances.size(), 2u);
+    EXPECT_EQ(s.meshes.at(0).indices, q.indices);
+    ASSERT_EQ(s.referencedFiles.size(), 1u);
+    EXPECT_EQ(s.referencedFiles[0].filename(), "q.bin");
+}
