@@ -2,6 +2,7 @@
 // hlod.json) into a sink: a temporary sibling folder renamed into place at the end
 // (writePackage), or a counter of sizes (measurePackage).
 #include <fstream>
+#include <map>
 #include <random>
 #include <set>
 
@@ -99,13 +100,21 @@ std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResu
     std::vector<std::string> uris;
     std::vector<EncodedContent> encoded;
     std::set<std::string> added;
+    std::map<std::uint64_t, std::size_t> byKey; // content key -> first content encoded with it
     for (std::size_t i = 0; i < layout.contents.size(); ++i) {
         progress.throwIfCancelled();
-        EncodedContent e = encoder.encode(layout.contents[i]);
-        uris.push_back("tiles/" + toHex(hashBytes(e.bytes.data(), e.bytes.size())) + ".glb");
-        if (added.insert(uris.back()).second) sink.add(uris.back(), e.bytes);
-        e.bytes = {};
-        encoded.push_back(std::move(e));
+        const std::uint64_t key = contentKey(layout.contents[i], bake, scene);
+        if (auto it = byKey.find(key); it != byKey.end()) { // a copy: the same file
+            uris.push_back(uris[it->second]);
+            encoded.push_back(encoded[it->second]);
+        } else {
+            byKey.emplace(key, i);
+            EncodedContent e = encoder.encode(layout.contents[i]);
+            uris.push_back("tiles/" + toHex(hashBytes(e.bytes.data(), e.bytes.size())) + ".glb");
+            if (added.insert(uris.back()).second) sink.add(uris.back(), e.bytes);
+            e.bytes = {};
+            encoded.push_back(std::move(e));
+        }
         progress.emit({"export", i + 1, layout.contents.size(), ""});
     }
     for (const auto& [uri, bytes] : textures.files())

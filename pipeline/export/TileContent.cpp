@@ -114,6 +114,32 @@ const ContentEncoder::Prepared& ContentEncoder::prepared(Id meshId) {
     return p;
 }
 
+std::uint64_t contentKey(const ContentPlan& plan, const BakeResult& bake, const Scene& scene) {
+    ContentHash h(plan.proxy ? 1 : 2);
+    if (plan.proxy) {
+        const ProxyMesh& proxy = bake.nodes[plan.node].proxy;
+        h.addValue(bake.nodes[plan.node].key);
+        h.addValue(proxy.vertexCount());
+        h.addValue(proxy.triangleCount());
+        h.addValue(plan.proxyOffset);
+        h.addValue(plan.positionStep);
+        return h.digest();
+    }
+    for (const LeafSlot& s : plan.leaves) {
+        h.addValue(scene.instances[s.instance].mesh);
+        h.addValue(s.merged);
+        h.addValue(s.positionStep);
+        if (s.merged) {
+            h.addValue(s.matrix);
+        } else {
+            h.addValue(s.trs.translation);
+            h.addValue(s.trs.rotation);
+            h.addValue(s.trs.scale);
+        }
+    }
+    return h.digest();
+}
+
 GlbMesh proxyGlbMesh(const ProxyMesh& proxy, const std::string& name) {
     GlbMesh m;
     m.name = name;

@@ -63,6 +63,11 @@ struct EncodedContent {
     double positionError = 0.0;
 };
 
+// A hash of everything a content's bytes depend on besides the scene's meshes and materials: a
+// proxy's bake key (its mesh, ProxyBaker.h), offset and grid; a group's meshes, placements and
+// grids. Plans with equal keys encode to equal bytes (copies are encoded once).
+std::uint64_t contentKey(const ContentPlan& plan, const BakeResult& bake, const Scene& scene);
+
 // Encodes contents; meshes prepared once are reused by every content showing them.
 class ContentEncoder {
 public:
