@@ -27,7 +27,11 @@ nlohmann::json matrixJson(const glm::dmat4& m) {
     nlohmann::json t = nlohmann::json::array();
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r)
-            t.push_back(m[c][r] == 0.0 ? 0.0 : m[c][r]); // no "-0.0"
+            // 0 and 1 as integers (no "-0.0", and most of a translation's 16 numbers are these)
+            if (m[c][r] == 0.0 || m[c][r] == 1.0)
+                t.push_back(static_cast<int>(m[c][r]));
+            else
+                t.push_back(m[c][r]);
     }
     return t;
 }
