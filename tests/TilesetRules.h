@@ -63,14 +63,25 @@ inline glm::dmat4 transformOf(const nlohmann::json& tile) {
     return m;
 }
 
-// Whether world point p lies in the box `o` placed by `world` (tolerance relative to size).
-inline bool inside(const glm::dvec3& p, const Obb& o, const glm::dmat4& world) {
-    const glm::dvec3 local = glm::dvec3(glm::inverse(world) * glm::dvec4(p, 1.0)) - o.c;
-    const glm::dmat3 inv = glm::inverse(o.h); // box coordinates in [-1, 1]
-    const glm::dvec3 u = inv * local;
-    const double tol = 1e-6 * (1.0 + glm::length(o.c) / glm::length(o.h[0] + o.h[1] + o.h[2]));
-    return std::abs(u.x) <= 1.0 + tol && std::abs(u.y) <= 1.0 + tol && std::abs(u.z) <= 1.0 + tol;
-}
+// A box placed by its tile's world transform, ready for point tests.
+class PlacedBox {
+public:
+    PlacedBox(const Obb& o, const glm::dmat4& world)
+        : c_(o.c), toBox_(glm::inverse(o.h)), toLocal_(glm::inverse(world)),
+          tol_(1e-6 * (1.0 + glm::length(o.c) / glm::length(o.h[0] + o.h[1] + o.h[2]))) {}
+    // Whether world point p lies in the box (tolerance relative to its size and offset).
+    bool holds(const glm::dvec3& p) const {
+        const glm::dvec3 u = toBox_ * (glm::dvec3(toLocal_ * glm::dvec4(p, 1.0)) - c_);
+        return std::abs(u.x) <= 1.0 + tol_ && std::abs(u.y) <= 1.0 + tol_ &&
+               std::abs(u.z) <= 1.0 + tol_;
+    }
+
+private:
+    glm::dvec3 c_;
+    glm::dmat3 toBox_; // box coordinates in [-1, 1]
+    glm::dmat4 toLocal_;
+    double tol_;
+};
 
 inline std::array<glm::dvec3, 8> corners(const Obb& o, const glm::dmat4& world) {
     std::array<glm::dvec3, 8> out;
@@ -132,7 +143,7 @@ inline void checkTile(const nlohmann::json& tile, TileCheck& tc,
                       const glm::dmat4& parentWorld = glm::dmat4(1.0)) {
     ++tc.tiles;
     const glm::dmat4 world = parentWorld * transformOf(tile);
-    const Obb box = obbOf(tile["boundingVolume"]["box"]);
+    const PlacedBox box(obbOf(tile["boundingVolume"]["box"]), world);
     const double err = tile["geometricError"];
     if (tile.contains("content")) {
         ++tc.contents;
@@ -143,7 +154,7 @@ inline void checkTile(const nlohmann::json& tile, TileCheck& tc,
         if (tc.checkContent && std::filesystem::is_regular_file(tc.dir / uri)) {
             std::size_t outside = 0;
             for (const glm::dvec3& v : tc.vertices.of(tc.dir / uri))
-                outside += inside(glm::dvec3(world * glm::dvec4(v, 1.0)), box, world) ? 0 : 1;
+                outside += box.holds(glm::dvec3(world * glm::dvec4(v, 1.0))) ? 0 : 1;
             EXPECT_EQ(outside, 0u) << uri << ": vertices outside the tile's box";
         }
     }
@@ -156,7 +167,7 @@ inline void checkTile(const nlohmann::json& tile, TileCheck& tc,
         EXPECT_LE(child["geometricError"].get<double>(), err);
         const glm::dmat4 childWorld = world * transformOf(child);
         for (const glm::dvec3& p : corners(obbOf(child["boundingVolume"]["box"]), childWorld))
-            EXPECT_TRUE(inside(p, box, world)) << "a child's box leaves its parent's";
+            EXPECT_TRUE(box.holds(p)) << "a child's box leaves its parent's";
         checkTile(child, tc, world);
     }
 }

@@ -259,6 +259,12 @@ TEST(PackageE2E, TiledEngineStaysWithinTenTimesItsSource) {
                          summary["source"]["bytes_on_disk"].get<double>();
     EXPECT_LE(ratio, 10.0);
     RecordProperty("disk_ratio", std::to_string(ratio));
+    // Shared files under nested tile transforms: every copy's box still holds its content.
+    std::ifstream in(pkg / "tileset.json");
+    hlod::test::TileCheck tc;
+    tc.dir = pkg;
+    hlod::test::checkTileset(nlohmann::json::parse(in), tc);
+    EXPECT_GT(tc.contents, 20 * summary["package"]["files"].get<std::size_t>());
     const auto i = runCli({"info", pkg.string(), "--json"}, 600);
     ASSERT_EQ(i.exitCode, 0) << i.err;
     const auto counts = nlohmann::json::parse(i.out)["counts"];

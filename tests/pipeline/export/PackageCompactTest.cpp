@@ -26,8 +26,8 @@ nlohmann::json readJson(const fs::path& p) {
     return nlohmann::json::parse(in);
 }
 
-// Eight modules 100 m apart, each two spheres and a cylinder (shared meshes, 768 + 768 + 192
-// triangles: well above the small-subtree limit), translated copies of each other.
+// Eight modules 100 m apart, each two spheres and a cylinder (shared meshes, 720 triangles a
+// sphere: well above the small-subtree limit), translated copies of each other.
 Scene plant() {
     Scene s;
     const Id sphere = s.addMesh(makeSphere(1.0f, 24, 16));
@@ -197,4 +197,22 @@ TEST(PackageCompact, SourceOnDiskCountsTheSceneFileAndItsTextures) {
     EXPECT_EQ(f.files, 2u);
     EXPECT_EQ(f.bytes, 5100u);
     EXPECT_GE(f.bytesOnDisk, f.bytes); // 5000 bytes take two 4 KiB blocks on ext4
+}
+
+TEST(PackageCompact, ASceneOfOneMeshIsOneLeafTile) {
+    // The tree is a single leaf: the root tile is its leaf group, error 0, no children.
+    Scene s;
+    s.addInstance(s.addMesh(makeSphere(1.0f, 24, 16)), s.addNode("ball", 0));
+    s.updateWorldTransforms();
+    test::TempDir tmp;
+    const Build b(std::move(s));
+    ASSERT_TRUE(b.tree.nodes[b.tree.root].isLeaf());
+    const PackageSummary sum = writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    EXPECT_EQ(sum.tiles, 1u);
+    EXPECT_EQ(sum.files, 3u); // tileset.json, hlod.json, one GLB
+    const nlohmann::json ts = readJson(tmp / "pkg" / "tileset.json");
+    EXPECT_EQ(ts["root"]["geometricError"], 0.0);
+    EXPECT_FALSE(ts["root"].contains("children"));
+    // 24 segments x 16 rings: 24 x 14 quads of two triangles plus two fans of 24 at the poles.
+    EXPECT_EQ(readPackageScene(readPackage(tmp / "pkg")).stats().triangles, 720u);
 }
