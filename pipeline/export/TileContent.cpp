@@ -156,6 +156,8 @@ EncodedContent ContentEncoder::encode(const ContentPlan& plan) {
 
 EncodedContent ContentEncoder::encodeProxy(const ContentPlan& plan) {
     ProxyMesh proxy = bake_.nodes[plan.node].proxy;
+    // Every per-vertex stream of the proxy goes through the same reordering (uvs too, once
+    // proxies carry an atlas: add them here and in proxyGlbMesh).
     optimizeOrder(proxy.indices, proxy.positions.size(), proxy.positions, proxy.normals,
                   proxy.colors);
     GlbScene glb;
