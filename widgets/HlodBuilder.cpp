@@ -3,11 +3,13 @@
 
 #include <chrono>
 #include <exception>
+#include <filesystem>
 #include <new>
 
 #include <QMetaObject>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/export/DiskUsage.h"
 
 namespace hlod::widgets {
 
@@ -94,6 +96,10 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
             std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress, previous.get()));
         result.original = originalStats(*scene);
         result.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+        Progress quiet; // the package is measured silently, but a cancel stops it
+        quiet.cancel = &job->cancel;
+        result.package = measurePackage(*scene, build->tree, build->bake, build->settings.bake, {},
+                                        blockSizeAt(std::filesystem::temp_directory_path()), quiet);
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         result.build = std::move(build);
         result.scene = std::move(scene);

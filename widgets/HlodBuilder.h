@@ -26,6 +26,7 @@
 #include <QString>
 
 #include "pipeline/doc/HlodBuild.h"
+#include "pipeline/export/Package.h"
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/scene/Scene.h"
 
@@ -37,6 +38,9 @@ struct BuiltHlod {
     std::shared_ptr<const HlodBuild> build;
     GeometryStats original; // BakeStats originalStats
     GeometryStats hlod;     // BakeStats hlodStats
+    // The package `hlod build` writes at the default compression, measured in memory: files and
+    // bytes on disk (Package.h measurePackage, blocks of the temporary folder's file system).
+    PackageSummary package;
     double seconds = 0.0;
 };
 

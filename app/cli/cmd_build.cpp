@@ -1,15 +1,18 @@
 // `hlod build SCENE... -o DIR [--volume V] [--k K] [--max-children N]
 // [--proxy decimate|remesh|sloppy] [--screen-size PX] [--pixel-error PX] [--fov DEG]
 // [--viewport-height PX] [--threads N] [--cache DIR] [--no-cache] [--no-dlod] [--geo LAT,LON,H]
-// [--deflection R] [--brep-unit M] [--json]` and `hlod build PROJECT.hlodproj [-o DIR] [flags]`:
-// runs the pipeline graph (pipeline/graph/PipelineGraph.h) headless — import, cluster, bake
-// every inner node's proxy, write the package — then prints the thesis-style statistics table.
+// [--deflection R] [--brep-unit M] [--compression meshopt|none] [--json]` and `hlod build
+// PROJECT.hlodproj [-o DIR] [flags]`: runs the pipeline graph (pipeline/graph/PipelineGraph.h)
+// headless — import, cluster, bake every inner node's proxy, write the package — then prints the
+// thesis-style statistics table.
 //
 // The flags are generated from the parameter declarations (pipeline/graph/Parameters.h); only
 // --json is this command's own. With a project file the project's graph runs as saved, hand
 // edits included; flags given on the command line override the project's values on every
 // node of their kind, and -o overrides the Export node's output folder. Without a project the
 // default graph Import -> Cluster -> Bake -> Export runs over the SCENE files.
+// The summary ends with the package's bytes on disk (allocated blocks) and file count next to
+// the source's (the scene files and every file they reference), and their ratio.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -77,12 +80,37 @@ void printLevels(const std::vector<LevelRow>& rows, const BakeResult& bake, doub
                 bake.dissolved, ratio);
 }
 
+// Bytes on disk (allocated blocks) of the package next to the source's (DiskUsage.h).
+void printDisk(const ExportResult& ex) {
+    const PackageSummary& p = ex.written;
+    std::printf("on disk:      package %.2f MB in %zu files (%zu tiles; %zu written, %zu "
+                "unchanged), source %.2f MB in %zu files",
+                static_cast<double>(p.bytesOnDisk) / 1.0e6, p.files, p.tiles, p.written, p.reused,
+                static_cast<double>(ex.source.bytesOnDisk) / 1.0e6, ex.source.files);
+    if (ex.source.bytesOnDisk > 0)
+        std::printf(": %.2fx the source", static_cast<double>(p.bytesOnDisk) /
+                                              static_cast<double>(ex.source.bytesOnDisk));
+    std::printf("\n");
+}
+
 void printJson(const NodeOutput& out) {
     const ExportResult& ex = *out.exported;
     nlohmann::json j = buildTreeJson(*out.scene, *out.tree, *out.bake, ex.info);
     j.erase("nodes");
     j["output"] = ex.output.string();
     j["output_bytes"] = ex.written.bytes;
+    j["package"] = {{"files", ex.written.files},
+                    {"bytes", ex.written.bytes},
+                    {"bytes_on_disk", ex.written.bytesOnDisk},
+                    {"tiles", ex.written.tiles},
+                    {"written", ex.written.written},
+                    {"unchanged", ex.written.reused}};
+    j["source"] = {{"files", ex.source.files},
+                   {"bytes", ex.source.bytes},
+                   {"bytes_on_disk", ex.source.bytesOnDisk}};
+    j["disk_ratio"] = ex.source.bytesOnDisk
+                          ? static_cast<double>(ex.written.bytesOnDisk) / ex.source.bytesOnDisk
+                          : 0.0;
     j["seconds"] = {{"cluster", out.clusterSeconds},
                     {"bake", out.bake->seconds},
                     {"dlod", ex.dlodSeconds},
@@ -117,6 +145,7 @@ void printSummary(const NodeOutput& out) {
     printTable(ex.info.statistics);
     std::printf("output:       %s (%.2f MB)\n", ex.output.string().c_str(),
                 static_cast<double>(ex.written.bytes) / 1.0e6);
+    printDisk(ex);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "Args.h"
 #include "Commands.h"
 #include "SceneInput.h"
+#include "pipeline/export/DiskUsage.h"
 
 namespace hlod::cli {
 
@@ -57,12 +58,15 @@ nlohmann::json toJson(const LoadedScene& loaded) {
     j["instances"] = std::move(instances);
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
+        const DiskFootprint disk = filesFootprint({p.dir});
         j["package"] = {{"tree_nodes", p.tree.nodes.size()},
                         {"leaves", p.tree.leafCount()},
                         {"height", p.tree.height()},
                         {"leaf_triangles", p.leafTriangles},
                         {"proxy_triangles", p.proxyTriangles},
                         {"volume", toString(p.tree.volume)},
+                        {"files", disk.files},
+                        {"bytes_on_disk", disk.bytesOnDisk},
                         {"source", p.manifest.value("source", nlohmann::json::object())}};
     }
     return j;
@@ -91,6 +95,9 @@ void printText(const LoadedScene& loaded) {
         std::printf("package:    %zu tree nodes (%zu leaves, height %d, %s), %zu proxy triangles\n",
                     p.tree.nodes.size(), p.tree.leafCount(), p.tree.height(),
                     toString(p.tree.volume), p.proxyTriangles);
+        const DiskFootprint disk = filesFootprint({p.dir});
+        std::printf("on disk:    %.2f MB in %zu files\n",
+                    static_cast<double>(disk.bytesOnDisk) / 1.0e6, disk.files);
     }
 }
 

@@ -1,6 +1,10 @@
-// Reads a package written by PackageWriter back: hlod.json gives the tree; every referenced
-// content file is checked to be a safe relative path that exists.
+// Reads a package written by PackageWriter back: hlod.json gives the tree and where every
+// leaf's geometry is; every referenced content file is checked to be a safe relative path that
+// exists. Format 2 (PackageManifest.h) and the older format 1 (one GLB per node, "content" per
+// node) are both read.
 #include <fstream>
+#include <map>
+#include <memory>
 
 #include "pipeline/core/Error.h"
 #include "pipeline/export/Package.h"
@@ -45,17 +49,56 @@ ClusterNode readNode(const nlohmann::json& j, std::size_t count) {
     ClusterNode n;
     n.parent = j.at("parent").is_null() ? kNoId : j.at("parent").get<Id>();
     n.children = j.at("children").get<std::vector<Id>>();
-    n.level = j.at("level").get<int>();
-    n.box.min = vec3(j.at("box").at("min"));
-    n.box.max = vec3(j.at("box").at("max"));
-    n.sphere.center = vec3(j.at("sphere").at("center"));
-    n.sphere.radius = j.at("sphere").at("radius").get<double>();
+    n.level = j.value("level", 0);
+    if (j.contains("box")) {
+        n.box.min = vec3(j.at("box").at("min"));
+        n.box.max = vec3(j.at("box").at("max"));
+    }
+    if (j.contains("sphere")) {
+        n.sphere.center = vec3(j.at("sphere").at("center"));
+        n.sphere.radius = j.at("sphere").at("radius").get<double>();
+    }
     if (j.contains("instance")) n.instance = j.at("instance").get<Id>();
     if ((n.parent != kNoId && n.parent >= count)) throw std::out_of_range("parent id");
     for (Id c : n.children) {
         if (c >= count) throw std::out_of_range("child id");
     }
     return n;
+}
+
+// The file of node `j` in a format-2 manifest ("" when it has none).
+std::string contentOf(const nlohmann::json& m, const nlohmann::json& j) {
+    if (!j.contains("tile")) return {};
+    const nlohmann::json& tile = m.at("tiles").at(j.at("tile").get<std::size_t>());
+    const int file = tile.at("file").get<int>();
+    if (file < 0) return {};
+    const bool leaf = j.at("children").empty();
+    if (!leaf && !tile.at("node").is_number()) return {}; // a node shown by no tile of its own
+    return m.at("files").at(static_cast<std::size_t>(file)).get<std::string>();
+}
+
+void readTree(PackageInfo& info) {
+    const nlohmann::json& m = info.manifest;
+    const auto& nodes = m.at("nodes");
+    const bool v2 = m.value("formatVersion", 1) >= 2;
+    info.tree.root = m.at("root").get<Id>();
+    info.tree.volume = volumeTypeFromString(m.at("volume").get<std::string>());
+    info.tree.k = m.value("k", 0.0);
+    for (const auto& j : nodes) {
+        info.tree.nodes.push_back(readNode(j, nodes.size()));
+        info.content.push_back(v2 ? contentOf(m, j) : j.at("content").get<std::string>());
+        const bool leaf = info.tree.nodes.back().isLeaf();
+        std::size_t tris = 0;
+        if (v2 && leaf)
+            tris = m.at("meshes")
+                       .at(j.at("mesh").get<std::size_t>())
+                       .at("triangles")
+                       .get<std::size_t>();
+        else
+            tris = j.at("triangles").get<std::size_t>();
+        (leaf ? info.leafTriangles : info.proxyTriangles) += tris;
+    }
+    if (info.tree.root >= info.tree.nodes.size()) throw std::out_of_range("root id");
 }
 
 } // namespace
@@ -79,17 +122,7 @@ PackageInfo readPackage(const fs::path& dirIn) {
         throw Error(ErrorCode::Malformed, info.dir / "tileset.json", "not a 3D Tiles 1.1 tileset");
     }
     try {
-        const auto& nodes = info.manifest.at("nodes");
-        info.tree.root = info.manifest.at("root").get<Id>();
-        info.tree.volume = volumeTypeFromString(info.manifest.at("volume").get<std::string>());
-        info.tree.k = info.manifest.value("k", 0.0);
-        for (const auto& j : nodes) {
-            info.tree.nodes.push_back(readNode(j, nodes.size()));
-            info.content.push_back(j.at("content").get<std::string>());
-            const auto tris = j.at("triangles").get<std::size_t>();
-            (info.tree.nodes.back().isLeaf() ? info.leafTriangles : info.proxyTriangles) += tris;
-        }
-        if (info.tree.root >= info.tree.nodes.size()) throw std::out_of_range("root id");
+        readTree(info);
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
@@ -101,7 +134,106 @@ PackageInfo readPackage(const fs::path& dirIn) {
     return info;
 }
 
-Scene readPackageScene(const PackageInfo& info) {
+namespace {
+
+// A content file of a format-2 package, imported once, and what the output scene took from it.
+struct LoadedFile {
+    Scene scene;
+    std::map<Id, Id> meshes;    // file mesh -> output mesh (instanced leaves share it)
+    std::map<Id, Id> materials; // file material -> output material
+};
+
+Id outputMaterial(LoadedFile& f, Id material, Scene& out) {
+    auto [it, added] = f.materials.try_emplace(material, 0);
+    if (added) it->second = out.addMaterial(f.scene.materials[material]);
+    return it->second;
+}
+
+// Vertices [first, first + count) and indices [firstIndex, firstIndex + indexCount) of `m`.
+Mesh sliceMesh(const Mesh& m, const nlohmann::json& range, const fs::path& manifest) {
+    const auto fv = range.at(0).get<std::size_t>(), nv = range.at(1).get<std::size_t>();
+    const auto fi = range.at(2).get<std::size_t>(), ni = range.at(3).get<std::size_t>();
+    if (fv > m.vertexCount() || nv > m.vertexCount() - fv || fi > m.indices.size() ||
+        ni > m.indices.size() - fi || ni % 3 != 0)
+        throw Error(ErrorCode::Malformed, manifest, "a contentRange lies outside its primitive");
+    Mesh s;
+    s.name = m.name;
+    s.material = m.material;
+    auto part = [&](const auto& v, auto& out) {
+        if (!v.empty()) out.assign(v.begin() + long(fv), v.begin() + long(fv + nv));
+    };
+    part(m.positions, s.positions);
+    part(m.normals, s.normals);
+    part(m.uvs, s.uvs);
+    part(m.colors, s.colors);
+    for (std::size_t i = fi; i < fi + ni; ++i) {
+        if (m.indices[i] < fv || m.indices[i] >= fv + nv)
+            throw Error(ErrorCode::Malformed, manifest,
+                        "a contentRange's index leaves its vertices");
+        s.indices.push_back(m.indices[i] - static_cast<std::uint32_t>(fv));
+    }
+    return s;
+}
+
+glm::dmat4 tileFrame(const nlohmann::json& tile) {
+    glm::dmat4 f(1.0);
+    if (tile.contains("matrix")) {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                f[c][r] = tile.at("matrix").at(std::size_t(c * 4 + r)).get<double>();
+    } else {
+        f[3] = glm::dvec4(vec3(tile.at("translation")), 1.0);
+    }
+    return f;
+}
+
+Scene readScene2(const PackageInfo& info) {
+    const fs::path manifest = info.dir / "hlod.json";
+    const nlohmann::json& m = info.manifest;
+    Scene out;
+    out.nodes[0].name = info.dir.filename().string();
+    std::map<std::string, std::unique_ptr<LoadedFile>> files;
+    const auto& nodes = m.at("nodes");
+    for (Id i = 0; i < info.tree.nodes.size(); ++i) {
+        if (!info.tree.nodes[i].isLeaf() || info.content[i].empty()) continue;
+        const nlohmann::json& j = nodes[i];
+        std::unique_ptr<LoadedFile>& f = files[info.content[i]];
+        if (!f) {
+            f = std::make_unique<LoadedFile>();
+            f->scene = importGltf(info.dir / info.content[i], ImportOptions{});
+        }
+        // Our files are flat: glTF node k is the importer's node k + 1 (0 is its root).
+        const Id gltfNode = j.at("contentNode").get<Id>() + 1;
+        if (gltfNode >= f->scene.nodes.size())
+            throw Error(ErrorCode::Malformed, manifest, "a contentNode does not exist");
+        const glm::dmat4 world = tileFrame(m.at("tiles").at(j.at("tile").get<std::size_t>())) *
+                                 f->scene.nodes[gltfNode].world;
+        const Id node = out.addNode(j.value("name", "leaf " + std::to_string(i)), 0, world);
+        for (const MeshInstance& inst : f->scene.instances) {
+            if (inst.node != gltfNode) continue;
+            const Mesh& src = f->scene.meshes[inst.mesh];
+            Id mesh;
+            if (j.contains("contentRange")) {
+                Mesh s = sliceMesh(src, j.at("contentRange"), manifest);
+                s.material = outputMaterial(*f, src.material, out);
+                mesh = out.addMesh(std::move(s));
+            } else {
+                auto [it, added] = f->meshes.try_emplace(inst.mesh, 0);
+                if (added) {
+                    Mesh copy = src;
+                    copy.material = outputMaterial(*f, src.material, out);
+                    it->second = out.addMesh(std::move(copy));
+                }
+                mesh = it->second;
+            }
+            out.addInstance(mesh, node);
+        }
+    }
+    out.updateWorldTransforms();
+    return out;
+}
+
+Scene readScene1(const PackageInfo& info) {
     Scene scene;
     scene.nodes[0].name = info.dir.filename().string();
     const auto& nodes = info.manifest.at("nodes");
@@ -109,7 +241,23 @@ Scene readPackageScene(const PackageInfo& info) {
         if (!info.tree.nodes[i].isLeaf() || info.content[i].empty()) continue;
         Scene tile = importGltf(info.dir / info.content[i], ImportOptions{});
         tile.sourceFiles.clear();
+        tile.referencedFiles.clear();
         scene.append(std::move(tile), nodes[i].value("name", "leaf " + std::to_string(i)));
+    }
+    return scene;
+}
+
+} // namespace
+
+Scene readPackageScene(const PackageInfo& info) {
+    Scene scene;
+    try {
+        scene = info.manifest.value("formatVersion", 1) >= 2 ? readScene2(info) : readScene1(info);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw Error(ErrorCode::Malformed, info.dir / "hlod.json",
+                    std::string("bad tree: ") + e.what());
     }
     scene.sourceFiles.push_back(info.dir);
     validateScene(scene, info.dir);

@@ -1,13 +1,19 @@
-// Writes the package of Package.h: tile contents, tileset.json, hlod.json, all into a
-// temporary sibling folder that is renamed into place at the end.
+// Assembles the package of Package.h (layout, contents named by hash, textures, tileset.json,
+// hlod.json) into a sink: a temporary sibling folder renamed into place at the end
+// (writePackage), or a counter of sizes (measurePackage).
 #include <fstream>
+#include <map>
 #include <random>
+#include <set>
 
 #include <unistd.h>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
+#include "pipeline/export/PackageManifest.h"
 #include "pipeline/export/TileContent.h"
+#include "pipeline/proxy/ContentHash.h"
 
 namespace hlod {
 
@@ -15,44 +21,109 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void writeText(const fs::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw Error(ErrorCode::Io, file, "cannot write the file");
+// Where the package's files go; `rel` is a relative path with '/' separators.
+class Sink {
+public:
+    virtual ~Sink() = default;
+    virtual void add(const std::string& rel, std::span<const std::uint8_t> bytes) = 0;
+    void addText(const std::string& rel, const std::string& text) {
+        add(rel, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+    }
+};
+
+// Counts what would be written (measurePackage).
+class SizeSink : public Sink {
+public:
+    SizeSink(PackageSummary& s, std::uintmax_t blockSize) : s_(s), blockSize_(blockSize) {}
+    void add(const std::string&, std::span<const std::uint8_t> bytes) override {
+        ++s_.files;
+        s_.bytes += bytes.size();
+        s_.bytesOnDisk += blocksFor(bytes.size(), blockSize_);
+    }
+
+private:
+    PackageSummary& s_;
+    std::uintmax_t blockSize_;
+};
+
+bool sameBytes(const fs::path& file, std::span<const std::uint8_t> bytes) {
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) != bytes.size() || ec)
+        return false;
+    std::ifstream in(file, std::ios::binary);
+    std::vector<char> have(bytes.size());
+    in.read(have.data(), static_cast<std::streamsize>(have.size()));
+    return in && std::equal(have.begin(), have.end(), bytes.begin(), [](char a, std::uint8_t b) {
+               return static_cast<std::uint8_t>(a) == b;
+           });
 }
 
-nlohmann::json vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-
-nlohmann::json manifestNodes(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
-                             const std::vector<TileStats>& stats) {
-    nlohmann::json nodes = nlohmann::json::array();
-    for (Id i = 0; i < tree.nodes.size(); ++i) {
-        const ClusterNode& n = tree.nodes[i];
-        const NodeBake& b = bake.nodes[i];
-        nlohmann::json j = {
-            {"id", i},
-            {"parent", n.parent == kNoId ? nlohmann::json() : nlohmann::json(n.parent)},
-            {"children", n.children},
-            {"level", n.level},
-            {"box", {{"min", vec(n.box.min)}, {"max", vec(n.box.max)}}},
-            {"sphere", {{"center", vec(n.sphere.center)}, {"radius", n.sphere.radius}}},
-            {"diameter", b.diameter},
-            {"errorBudget", n.isLeaf() ? 0.0 : b.errorBudget},
-            {"switchDistance", b.switchDistance},
-            {"triangles", stats[i].triangles},
-            {"vertices", stats[i].vertices},
-            {"content", stats[i].triangles ? "tiles/" + std::to_string(i) + ".glb" : ""}};
-        if (n.isLeaf()) {
-            const MeshInstance& inst = scene.instances[n.instance];
-            j["instance"] = n.instance;
-            j["name"] = scene.nodes[inst.node].name;
-            j["mesh"] = scene.meshes[inst.mesh].name;
-            j["material"] = scene.materials[scene.meshes[inst.mesh].material].name;
+// Writes into the temporary folder; a file the old package already holds with the same bytes
+// is hard-linked from it instead (nothing written).
+class FolderSink : public Sink {
+public:
+    FolderSink(fs::path tmp, fs::path old, PackageSummary& s)
+        : tmp_(std::move(tmp)), old_(std::move(old)), s_(s) {}
+    void add(const std::string& rel, std::span<const std::uint8_t> bytes) override {
+        const fs::path target = tmp_ / rel;
+        fs::create_directories(target.parent_path());
+        if (!old_.empty() && sameBytes(old_ / rel, bytes)) {
+            std::error_code ec;
+            fs::create_hard_link(old_ / rel, target, ec);
+            if (!ec) {
+                ++s_.reused;
+                return;
+            }
         }
-        nodes.push_back(std::move(j));
+        std::ofstream out(target, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()),
+                  static_cast<std::streamsize>(bytes.size()));
+        out.close();
+        if (!out) throw Error(ErrorCode::Io, target, "cannot write the file");
+        ++s_.written;
     }
-    return nodes;
+
+private:
+    fs::path tmp_, old_;
+    PackageSummary& s_;
+};
+
+// Every file of the package into `sink`; returns the number of tiles.
+std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                     const BakeParams& bakeParams, const PackageOptions& options, Sink& sink,
+                     const Progress& progress) {
+    if (tree.root == kNoId || bake.nodes.size() != tree.nodes.size())
+        throw Error(ErrorCode::InvalidArgument, "package: the proxies do not match the tree");
+    const PackageLayout layout = planPackage(scene, tree, bake);
+    TextureStore textures(scene);
+    ContentEncoder encoder(scene, bake, textures, options.compression);
+    std::vector<std::string> uris;
+    std::vector<EncodedContent> encoded;
+    std::set<std::string> added;
+    std::map<std::uint64_t, std::size_t> byKey; // content key -> first content encoded with it
+    for (std::size_t i = 0; i < layout.contents.size(); ++i) {
+        progress.throwIfCancelled();
+        const std::uint64_t key = contentKey(layout.contents[i], bake, scene);
+        if (auto it = byKey.find(key); it != byKey.end()) { // a copy: the same file
+            uris.push_back(uris[it->second]);
+            encoded.push_back(encoded[it->second]);
+        } else {
+            byKey.emplace(key, i);
+            EncodedContent e = encoder.encode(layout.contents[i]);
+            uris.push_back("tiles/" + toHex(hashBytes(e.bytes.data(), e.bytes.size())) + ".glb");
+            if (added.insert(uris.back()).second) sink.add(uris.back(), e.bytes);
+            e.bytes = {};
+            encoded.push_back(std::move(e));
+        }
+        progress.emit({"export", i + 1, layout.contents.size(), ""});
+    }
+    for (const auto& [uri, bytes] : textures.files())
+        sink.add("tiles/" + uri, bytes);
+    sink.addText("tileset.json", buildTileset(layout, uris, options.geo).dump());
+    const ManifestInput manifest{scene, tree, bake, bakeParams, options, layout, uris, encoded};
+    sink.addText("hlod.json", buildManifest(manifest).dump());
+    progress.throwIfCancelled();
+    return layout.tiles.size();
 }
 
 fs::path siblingTemp(const fs::path& dir, const char* tag) {
@@ -86,9 +157,6 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
                             const BakeResult& bake, const BakeParams& bakeParams,
                             const PackageOptions& options, const Progress& progress) {
     const fs::path dir = fs::absolute(dirIn).lexically_normal();
-    if (tree.root == kNoId || bake.nodes.size() != tree.nodes.size()) {
-        throw Error(ErrorCode::InvalidArgument, "package: the proxies do not match the tree");
-    }
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
         throw Error(ErrorCode::Io, dir, "exists and is not a folder");
@@ -97,54 +165,27 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
     const fs::path tmp = siblingTemp(dir, ".tmp-");
     PackageSummary summary;
     try {
-        fs::create_directories(tmp / "tiles");
-        std::vector<TileStats> stats(tree.nodes.size());
-        std::vector<bool> hasContent(tree.nodes.size(), false);
-        TextureCache textures(scene, tmp / "tiles");
-        for (Id i = 0; i < tree.nodes.size(); ++i) {
-            progress.throwIfCancelled();
-            const fs::path file = tmp / "tiles" / (std::to_string(i) + ".glb");
-            stats[i] =
-                tree.nodes[i].isLeaf()
-                    ? writeLeafContent(file, scene, tree.nodes[i].instance, textures)
-                    : writeProxyContent(file, bake.nodes[i].proxy, "proxy " + std::to_string(i));
-            hasContent[i] = stats[i].triangles > 0;
-            summary.bytes += stats[i].bytes;
-            summary.files += hasContent[i] ? 1 : 0;
-            progress.emit({"export", i + 1, tree.nodes.size(), ""});
-        }
-        summary.bytes += textures.bytesWritten();
-        summary.files += textures.filesWritten();
-        const nlohmann::json tileset = buildTileset(tree, bake, hasContent, options.geo);
-        writeText(tmp / "tileset.json", tileset.dump(1));
-        const ScreenParams& sp = bakeParams.screen;
-        nlohmann::json manifest = {{"format", "hlod-studio-package"},
-                                   {"formatVersion", 1},
-                                   {"generator", std::string("HLOD Studio ") + HLOD_VERSION},
-                                   {"source", {{"inputs", options.inputs}}},
-                                   {"contentUpAxis", "Y"},
-                                   {"screen",
-                                    {{"screenSizePx", sp.screenSize},
-                                     {"pixelError", sp.pixelError},
-                                     {"fovYDegrees", sp.fovYDegrees},
-                                     {"viewportHeightPx", sp.viewportHeight},
-                                     {"maximumScreenSpaceError", sp.pixelError}}},
-                                   {"volume", toString(tree.volume)},
-                                   {"k", tree.k},
-                                   {"proxyMethod", toString(bakeParams.method)},
-                                   {"parameters", options.parameters},
-                                   {"statistics", options.statistics},
-                                   {"root", tree.root},
-                                   {"nodes", manifestNodes(scene, tree, bake, stats)}};
-        writeText(tmp / "hlod.json", manifest.dump(1));
-        progress.throwIfCancelled();
+        fs::create_directories(tmp);
+        FolderSink sink(tmp, isPackageFolder(dir) ? dir : fs::path(), summary);
+        summary.tiles = assemble(scene, tree, bake, bakeParams, options, sink, progress);
         commitFolder(tmp, dir);
     } catch (...) {
         fs::remove_all(tmp, ec);
         throw;
     }
-    summary.tiles = tree.nodes.size();
-    summary.files += 2;
+    const DiskFootprint disk = filesFootprint({dir});
+    summary.files = disk.files;
+    summary.bytes = disk.bytes;
+    summary.bytesOnDisk = disk.bytesOnDisk;
+    return summary;
+}
+
+PackageSummary measurePackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                              const BakeParams& bakeParams, const PackageOptions& options,
+                              std::uintmax_t blockSize, const Progress& progress) {
+    PackageSummary summary;
+    SizeSink sink(summary, blockSize);
+    summary.tiles = assemble(scene, tree, bake, bakeParams, options, sink, progress);
     return summary;
 }
 

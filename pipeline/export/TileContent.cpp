@@ -1,31 +1,57 @@
-// Tile content encoding on top of the GLB writer. Leaves are pre-transformed (the instance's
-// world matrix applied in double precision, positions stored relative to the mesh's world
-// centre, carried by the glTF node translation) so that every tile shares the package frame.
+// Tile contents on top of the GLB writer (see TileContent.h).
 #include "pipeline/export/TileContent.h"
 
-#include <fstream>
+#include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <meshoptimizer.h>
 
-#include "pipeline/core/AtomicFile.h"
-#include "pipeline/core/Error.h"
+#include "pipeline/io/GlbMeshopt.h"
 #include "pipeline/io/TextureImage.h"
-
-#include "pipeline/io/GlbWriter.h"
+#include "pipeline/proxy/ContentHash.h"
 
 namespace hlod {
 
 namespace {
 
-TileStats stats(const std::filesystem::path& file, std::size_t tris, std::size_t verts) {
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(file, ec);
-    return {tris, verts, ec ? 0 : size};
+// Half the grid step the writer uses for `positions` asked at `requested` (GlbMeshopt.h).
+double halfStep(std::span<const glm::vec3> positions, double requested) {
+    Aabb box;
+    for (const glm::vec3& p : positions)
+        box.expand(glm::dvec3(p));
+    const glm::dvec3 e = box.extent();
+    return 0.5 * positionGridStep(std::max({e.x, e.y, e.z}), requested);
+}
+
+double maxAbs(const glm::dvec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// Vertex cache then vertex fetch order (meshoptimizer); `streams` are remapped alike.
+// Returns the remap (old vertex -> new, ~0u for dropped vertices) applied to the indices.
+template <class... Streams>
+void optimizeOrder(std::vector<std::uint32_t>& indices, std::size_t vertexCount,
+                   Streams&... streams) {
+    if (indices.empty()) return;
+    meshopt_optimizeVertexCache(indices.data(), indices.data(), indices.size(), vertexCount);
+    std::vector<unsigned> remap(vertexCount);
+    const std::size_t kept =
+        meshopt_optimizeVertexFetchRemap(remap.data(), indices.data(), indices.size(), vertexCount);
+    meshopt_remapIndexBuffer(indices.data(), indices.data(), indices.size(), remap.data());
+    auto apply = [&](auto& v) {
+        if (v.empty()) return;
+        auto out = v;
+        meshopt_remapVertexBuffer(out.data(), v.data(), vertexCount, sizeof(v[0]), remap.data());
+        out.resize(kept);
+        v = std::move(out);
+    };
+    (apply(streams), ...);
 }
 
 } // namespace
 
-const std::string& TextureCache::uriFor(Id material) {
+const std::string& TextureStore::uriFor(Id material) {
     if (auto it = byMaterial_.find(material); it != byMaterial_.end()) return it->second;
     std::string& uri = byMaterial_[material];
     const Material& m = scene_.materials[material];
@@ -35,84 +61,237 @@ const std::string& TextureCache::uriFor(Id material) {
         return uri;
     }
     std::string& shared = byFile_[m.baseColorTexture];
-    const std::optional<EncodedImage> image = loadTextureForGltf(m.baseColorTexture);
+    std::optional<EncodedImage> image = loadTextureForGltf(m.baseColorTexture);
     if (!image) return uri; // mean colour fallback, see the header
-    const std::string name = "textures/" + std::to_string(byFile_.size() - 1) +
-                             (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
-    const std::filesystem::path file = tilesDir_ / name;
-    std::filesystem::create_directories(file.parent_path());
-    writeFileAtomic(file, std::string_view(reinterpret_cast<const char*>(image->bytes.data()),
-                                           image->bytes.size()));
-    bytes_ += image->bytes.size();
-    ++files_;
-    shared = name;
-    uri = name;
+    shared = "textures/" + toHex(hashBytes(image->bytes.data(), image->bytes.size())) +
+             (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
+    files_[shared] = std::move(image->bytes);
+    uri = shared;
     return uri;
 }
 
-TileStats writeLeafContent(const std::filesystem::path& file, const Scene& scene, Id instance,
-                           TextureCache& textures) {
-    const MeshInstance& inst = scene.instances[instance];
-    const Mesh& mesh = scene.meshes[inst.mesh];
-    if (mesh.indices.empty()) return {};
-    const glm::dmat4& world = scene.nodes[inst.node].world;
-    const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(world));
-    Aabb box;
-    std::vector<glm::dvec3> worldPos(mesh.positions.size());
-    for (std::size_t i = 0; i < worldPos.size(); ++i) {
-        worldPos[i] = glm::dvec3(world * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
-        box.expand(worldPos[i]);
-    }
-    const glm::dvec3 origin = box.center();
-    std::vector<glm::vec3> positions(worldPos.size()), normals(mesh.normals.size());
-    for (std::size_t i = 0; i < worldPos.size(); ++i)
-        positions[i] = glm::vec3(worldPos[i] - origin);
-    for (std::size_t i = 0; i < normals.size(); ++i) {
-        const glm::dvec3 n = normalMatrix * glm::dvec3(mesh.normals[i]);
-        const double len = glm::length(n);
-        normals[i] = len > 0.0 ? glm::vec3(n / len) : glm::vec3(0, 1, 0);
-    }
-    std::vector<std::uint32_t> indices = mesh.indices;
-    if (glm::determinant(glm::dmat3(world)) < 0.0) { // a mirroring transform flips the winding
-        for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
-            std::swap(indices[t + 1], indices[t + 2]);
-    }
+// A scene mesh as leaves store it: optimised order, 8-bit colours, uvs only when textured.
+struct ContentEncoder::Prepared {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
     std::vector<glm::u8vec4> colors;
+    std::vector<std::uint32_t> indices;
+    std::string uri;
+    glm::vec4 baseColor{1.0f};
+    std::string name, materialName;
+    Id material = 0;
+};
+
+ContentEncoder::ContentEncoder(const Scene& scene, const BakeResult& bake, TextureStore& textures,
+                               GlbCompression compression)
+    : scene_(scene), bake_(bake), textures_(textures), compression_(compression) {}
+
+ContentEncoder::~ContentEncoder() = default;
+
+const ContentEncoder::Prepared& ContentEncoder::prepared(Id meshId) {
+    std::unique_ptr<Prepared>& slot = prepared_[meshId];
+    if (slot) return *slot;
+    slot = std::make_unique<Prepared>();
+    Prepared& p = *slot;
+    const Mesh& mesh = scene_.meshes[meshId];
+    const Material& mat = scene_.materials[mesh.material];
+    p.positions = mesh.positions;
+    p.normals = mesh.normals;
+    p.indices = mesh.indices;
     for (const glm::vec4& c : mesh.colors)
-        colors.push_back(quantizeColor(c));
-    const Material& mat = scene.materials[mesh.material];
-    GlbMesh glb;
-    glb.name = scene.nodes[inst.node].name;
-    glb.translation = origin;
-    glb.positions = positions;
-    glb.normals = normals;
-    glb.colors = colors;
-    glb.indices = indices;
-    const std::string noTexture;
-    const std::string& uri = mesh.uvs.empty() ? noTexture : textures.uriFor(mesh.material);
-    if (!uri.empty()) {
-        glb.uvs = mesh.uvs;
-        glb.imageUri = uri;
-        glb.baseColor = mat.baseColor;
+        p.colors.push_back(quantizeColor(c));
+    p.uri = mesh.uvs.empty() ? std::string() : textures_.uriFor(mesh.material);
+    if (!p.uri.empty()) {
+        p.uvs = mesh.uvs;
+        p.baseColor = mat.baseColor;
     } else {
-        glb.baseColor = mat.effectiveColor();
+        p.baseColor = mat.effectiveColor();
     }
-    writeGlbFile(file, glb);
-    return stats(file, mesh.triangleCount(), mesh.vertexCount());
+    optimizeOrder(p.indices, p.positions.size(), p.positions, p.normals, p.uvs, p.colors);
+    p.name = mesh.name;
+    p.materialName = mat.name;
+    p.material = mesh.material;
+    return p;
 }
 
-TileStats writeProxyContent(const std::filesystem::path& file, const ProxyMesh& proxy,
-                            const std::string& name) {
-    if (proxy.empty()) return {};
-    GlbMesh glb;
-    glb.name = name;
-    glb.translation = proxy.origin;
-    glb.positions = proxy.positions;
-    glb.normals = proxy.normals;
-    glb.colors = proxy.colors;
-    glb.indices = proxy.indices;
-    writeGlbFile(file, glb);
-    return stats(file, proxy.triangleCount(), proxy.vertexCount());
+std::uint64_t contentKey(const ContentPlan& plan, const BakeResult& bake, const Scene& scene) {
+    ContentHash h(plan.proxy ? 1 : 2);
+    if (plan.proxy) {
+        const ProxyMesh& proxy = bake.nodes[plan.node].proxy;
+        h.addValue(bake.nodes[plan.node].key);
+        h.addValue(proxy.vertexCount());
+        h.addValue(proxy.triangleCount());
+        h.addValue(plan.proxyOffset);
+        h.addValue(plan.positionStep);
+        return h.digest();
+    }
+    for (const LeafSlot& s : plan.leaves) {
+        h.addValue(scene.instances[s.instance].mesh);
+        h.addValue(s.merged);
+        h.addValue(s.positionStep);
+        if (s.merged) {
+            h.addValue(s.matrix);
+        } else {
+            h.addValue(s.trs.translation);
+            h.addValue(s.trs.rotation);
+            h.addValue(s.trs.scale);
+        }
+    }
+    return h.digest();
+}
+
+GlbMesh proxyGlbMesh(const ProxyMesh& proxy, const std::string& name) {
+    GlbMesh m;
+    m.name = name;
+    m.positions = proxy.positions;
+    m.normals = proxy.normals;
+    m.colors = proxy.colors;
+    m.indices = proxy.indices;
+    return m;
+}
+
+EncodedContent ContentEncoder::encode(const ContentPlan& plan) {
+    return plan.proxy ? encodeProxy(plan) : encodeGroup(plan);
+}
+
+EncodedContent ContentEncoder::encodeProxy(const ContentPlan& plan) {
+    ProxyMesh proxy = bake_.nodes[plan.node].proxy;
+    // Every per-vertex stream of the proxy goes through the same reordering (uvs too, once
+    // proxies carry an atlas: add them here and in proxyGlbMesh).
+    optimizeOrder(proxy.indices, proxy.positions.size(), proxy.positions, proxy.normals,
+                  proxy.colors);
+    GlbScene glb;
+    glb.compression = compression_;
+    glb.meshes.push_back(proxyGlbMesh(proxy, "proxy"));
+    glb.meshes.back().positionStep = plan.positionStep;
+    GlbNode node;
+    node.mesh = 0;
+    node.trs.translation = plan.proxyOffset;
+    glb.nodes.push_back(node);
+    EncodedContent out;
+    out.bytes = encodeGlb(glb);
+    out.triangles = proxy.triangleCount();
+    out.vertices = proxy.vertexCount();
+    if (compression_ == GlbCompression::Meshopt)
+        out.positionError = halfStep(proxy.positions, plan.positionStep);
+    return out;
+}
+
+namespace {
+
+// Leaves merged into one primitive: the same material, texture and colour streams.
+struct Merged {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::u8vec4> colors;
+    std::vector<std::uint32_t> indices;
+    double step = 0.0;
+    GlbMesh look;                     // material, texture, colour of the first member
+    std::vector<std::size_t> members; // slot indices
+};
+
+// Appends a prepared mesh placed by `matrix` (normals by its inverse transpose, the winding
+// flipped by a mirror) and records where it went.
+void append(Merged& m, const auto& p, const glm::dmat4& matrix, LeafInContent& where) {
+    const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(matrix));
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    where.merged = true;
+    where.firstVertex = base;
+    where.vertexCount = p.positions.size();
+    where.firstIndex = m.indices.size();
+    where.indexCount = p.indices.size();
+    for (const glm::vec3& v : p.positions)
+        m.positions.push_back(glm::vec3(matrix * glm::dvec4(glm::dvec3(v), 1.0)));
+    for (const glm::vec3& n : p.normals) {
+        const glm::dvec3 t = normalMatrix * glm::dvec3(n);
+        const double len = glm::length(t);
+        m.normals.push_back(len > 0.0 ? glm::vec3(t / len) : glm::vec3(0, 1, 0));
+    }
+    m.uvs.insert(m.uvs.end(), p.uvs.begin(), p.uvs.end());
+    m.colors.insert(m.colors.end(), p.colors.begin(), p.colors.end());
+    const bool mirrored = glm::determinant(glm::dmat3(matrix)) < 0.0; // flips the winding
+    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        m.indices.push_back(base + p.indices[t]);
+        m.indices.push_back(base + p.indices[t + (mirrored ? 2 : 1)]);
+        m.indices.push_back(base + p.indices[t + (mirrored ? 1 : 2)]);
+    }
+}
+
+GlbMesh lookOf(const auto& p) {
+    GlbMesh g;
+    g.name = p.name;
+    g.materialName = p.materialName;
+    g.baseColor = p.baseColor;
+    g.imageUri = p.uri;
+    return g;
+}
+
+} // namespace
+
+EncodedContent ContentEncoder::encodeGroup(const ContentPlan& plan) {
+    EncodedContent out;
+    out.leaves.resize(plan.leaves.size());
+    GlbScene glb;
+    glb.compression = compression_;
+    std::map<Id, int> meshIndex; // instanced scene mesh -> GLB mesh
+    // Merged primitives by look: base colour, texture, with or without colours (importers
+    // often give every object its own material of the same look).
+    std::map<std::tuple<float, float, float, float, std::string, bool>, Merged> merged;
+    for (std::size_t i = 0; i < plan.leaves.size(); ++i) {
+        const LeafSlot& s = plan.leaves[i];
+        const Id meshId = scene_.instances[s.instance].mesh;
+        const Prepared& p = prepared(meshId);
+        out.triangles += p.indices.size() / 3;
+        out.vertices += p.positions.size();
+        if (s.merged) {
+            const glm::vec4& c = p.baseColor;
+            Merged& m = merged[{c.r, c.g, c.b, c.a, p.uri, !p.colors.empty()}];
+            if (m.members.empty()) m.look = lookOf(p);
+            m.step = m.step > 0.0 ? std::min(m.step, s.positionStep) : s.positionStep;
+            m.members.push_back(i);
+            append(m, p, s.matrix, out.leaves[i]);
+            continue;
+        }
+        auto [it, added] = meshIndex.try_emplace(meshId, static_cast<int>(glb.meshes.size()));
+        if (added) {
+            GlbMesh g = lookOf(p);
+            g.positions = p.positions;
+            g.normals = p.normals;
+            g.uvs = p.uvs;
+            g.colors = p.colors;
+            g.indices = p.indices;
+            g.positionStep = s.positionStep;
+            glb.meshes.push_back(g);
+        }
+        if (compression_ == GlbCompression::Meshopt)
+            out.positionError = std::max(out.positionError, halfStep(p.positions, s.positionStep) *
+                                                                maxAbs(s.trs.scale));
+        GlbNode node;
+        node.mesh = it->second;
+        node.trs = s.trs;
+        out.leaves[i].node = static_cast<int>(glb.nodes.size());
+        glb.nodes.push_back(node);
+    }
+    for (auto& [key, m] : merged) {
+        GlbMesh g = m.look;
+        g.name = "merged";
+        g.positions = m.positions;
+        g.normals = m.normals;
+        g.uvs = m.uvs;
+        g.colors = m.colors;
+        g.indices = m.indices;
+        g.positionStep = m.step;
+        if (compression_ == GlbCompression::Meshopt)
+            out.positionError = std::max(out.positionError, halfStep(m.positions, m.step));
+        GlbNode node;
+        node.mesh = static_cast<int>(glb.meshes.size());
+        for (std::size_t i : m.members)
+            out.leaves[i].node = static_cast<int>(glb.nodes.size());
+        glb.meshes.push_back(g);
+        glb.nodes.push_back(node);
+    }
+    out.bytes = encodeGlb(glb);
+    return out;
 }
 
 } // namespace hlod

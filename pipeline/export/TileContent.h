@@ -1,54 +1,95 @@
-// The glTF content of one tile: a leaf's original mesh instance (baked into world space
-// relative to its own centre, material base colour and base colour texture kept) or an inner
-// node's proxy (vertex colours).
+// The glTF content of one tile (PackageLayout.h says what goes where): a proxy (vertex colours),
+// or a leaf group: instanced meshes under nodes, the other leaves merged per material into one
+// primitive in the group's frame, each keeping its material: base colour and base colour
+// texture.
+// Vertex order: every mesh goes through meshoptimizer's vertex cache and vertex fetch
+// optimisation (Forsyth-like cache order, then vertices in first-use order; unreferenced
+// vertices dropped) before it is encoded, whatever the compression, so compressed and plain
+// packages hold the same vertices in the same order.
 // Textures: a leaf with uvs whose material has a readable texture file references it; the
-// image is written once per package under tiles/textures/ (PNG/JPEG as is, other formats
-// re-encoded as PNG, TextureImage.h) and shared by every tile that uses it. Without uvs, or
-// when the file is missing or undecodable, or the texture was embedded in the source (its
-// bytes are not kept by the importers), the leaf uses the material's base colour times the
-// texture's mean colour.
+// image is stored once per package under tiles/textures/, named by its content hash (PNG/JPEG
+// as is, other formats re-encoded as PNG, TextureImage.h), and shared by every tile that uses
+// it. Without uvs, or when the file is missing or undecodable, or the texture was embedded in
+// the source (its bytes are not kept by the importers), the leaf uses the material's base
+// colour times the texture's mean colour.
+// Textured proxies: makeContent reads the proxy's geometry through proxyGlbMesh, the one place
+// that turns a ProxyMesh into a GlbMesh (uvs and an atlas image go there when proxies have
+// them).
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
+#include "pipeline/export/PackageLayout.h"
+#include "pipeline/io/GlbWriter.h"
 #include "pipeline/proxy/ProxyMesh.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod {
 
-struct TileStats {
-    std::size_t triangles = 0;
-    std::size_t vertices = 0;
-    std::uintmax_t bytes = 0;
-};
-
-// The package's shared texture files, written on first use into `tilesDir`/textures/ and
-// named by order of first use (deterministic for a deterministic export order).
-class TextureCache {
+// The package's texture files, loaded on first use and named by content.
+class TextureStore {
 public:
-    TextureCache(const Scene& scene, std::filesystem::path tilesDir)
-        : scene_(scene), tilesDir_(std::move(tilesDir)) {}
-    // URI relative to tilesDir; empty when the material has no usable texture file.
-    // Failure to write: Error(Io) naming the file.
+    explicit TextureStore(const Scene& scene) : scene_(scene) {}
+    // URI relative to tiles/ ("textures/<hash>.png"); empty when the material has no usable
+    // texture file.
     const std::string& uriFor(Id material);
-    std::uintmax_t bytesWritten() const { return bytes_; }
-    std::size_t filesWritten() const { return files_; }
+    // Every texture used so far: URI relative to tiles/ -> bytes.
+    const std::map<std::string, std::vector<std::uint8_t>>& files() const { return files_; }
 
 private:
     const Scene& scene_;
-    std::filesystem::path tilesDir_;
     std::map<Id, std::string> byMaterial_;
     std::map<std::filesystem::path, std::string> byFile_;
-    std::uintmax_t bytes_ = 0;
-    std::size_t files_ = 0;
+    std::map<std::string, std::vector<std::uint8_t>> files_;
 };
 
-TileStats writeLeafContent(const std::filesystem::path& file, const Scene& scene, Id instance,
-                           TextureCache& textures);
-TileStats writeProxyContent(const std::filesystem::path& file, const ProxyMesh& proxy,
-                            const std::string& name);
+// Where a leaf ended up inside its content.
+struct LeafInContent {
+    int node = -1;       // glTF node index (flat scene: the i-th root node)
+    bool merged = false; // its geometry is a range of that node's primitive
+    std::size_t firstVertex = 0, vertexCount = 0, firstIndex = 0, indexCount = 0;
+};
+
+struct EncodedContent {
+    std::vector<std::uint8_t> bytes;   // the GLB
+    std::vector<LeafInContent> leaves; // parallel to ContentPlan::leaves
+    std::size_t triangles = 0, vertices = 0;
+    // The most a decoded position is off on any axis, metres in the content's frame: half the
+    // coarsest grid step times the node scale (0 without compression).
+    double positionError = 0.0;
+};
+
+// A hash of everything a content's bytes depend on besides the scene's meshes and materials: a
+// proxy's bake key (its mesh, ProxyBaker.h), offset and grid; a group's meshes, placements and
+// grids. Plans with equal keys encode to equal bytes (copies are encoded once).
+std::uint64_t contentKey(const ContentPlan& plan, const BakeResult& bake, const Scene& scene);
+
+// Encodes contents; meshes prepared once are reused by every content showing them.
+class ContentEncoder {
+public:
+    ContentEncoder(const Scene& scene, const BakeResult& bake, TextureStore& textures,
+                   GlbCompression compression);
+    ~ContentEncoder();
+    EncodedContent encode(const ContentPlan& plan);
+
+private:
+    struct Prepared;
+    const Prepared& prepared(Id mesh);
+    EncodedContent encodeProxy(const ContentPlan& plan);
+    EncodedContent encodeGroup(const ContentPlan& plan);
+
+    const Scene& scene_;
+    const BakeResult& bake_;
+    TextureStore& textures_;
+    GlbCompression compression_;
+    std::map<Id, std::unique_ptr<Prepared>> prepared_;
+};
+
+// The GLB mesh of a proxy (spans into `proxy`, which must outlive it).
+GlbMesh proxyGlbMesh(const ProxyMesh& proxy, const std::string& name);
 
 } // namespace hlod

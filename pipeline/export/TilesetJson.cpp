@@ -1,128 +1,103 @@
-// tileset.json after OGC 3D Tiles 1.1 (sections 5.1 tiles, 5.5 bounding volumes "box", 5.7
-// geometric error, 5.8 refinement). See Package.h for the axis convention and why the
-// geometric error is the proxy error.
+// tileset.json after OGC 3D Tiles 1.1 (sections 5.1 tiles, 5.3 coordinate reference system and
+// tile transforms, 5.5 bounding volumes "box", 5.7 geometric error, 5.8 refinement), from the
+// layout of PackageLayout.h. See Package.h for the axis convention and why the geometric error
+// is the proxy error.
+//
+// Transforms: a tile's `transform` maps its frame to its parent's (5.3.3), so it is
+// inverse(parent frame) x frame, moved from our Y-up package frame into the Z-up tileset
+// frame: A x M x inverse(A) with A: (x, y, z) -> (x, -z, y). Content is glTF and Y up; the
+// runtime turns it Z up before the tile transforms apply (5.3.4), which is what A does to the
+// package frame.
+// Boxes: in the tile's frame (frames only translate): its whole box, content and children,
+// relative to its origin.
 #include <algorithm>
 
+#include "pipeline/export/JsonNumbers.h"
 #include "pipeline/export/Package.h"
-#include "pipeline/proxy/ProxyEconomy.h"
 
 namespace hlod {
 
 namespace {
 
-// A flat node (a single plane) still needs a box of non-zero thickness for runtimes'
-// oriented-box math: 1 mm at least.
-constexpr double kMinHalfExtent = 5e-4;
+// (x, y, z)_Y-up -> (x, -z, y)_Z-up as a matrix (columns are the images of the axes).
+const glm::dmat4 kYupToZup(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, -1, 0, 0),
+                           glm::dvec4(0, 0, 0, 1));
 
-// Our content is Y up; tiles are Z up: (x, y, z) -> (x, -z, y).
-nlohmann::json boxVolume(const Aabb& b) {
-    const glm::dvec3 c = b.center();
-    const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(kMinHalfExtent));
-    return nlohmann::json::array({c.x, -c.z, c.y, h.x, 0.0, 0.0, 0.0, h.z, 0.0, 0.0, 0.0, h.y});
-}
-
-// Nodes in an order where every parent comes before its children.
-std::vector<Id> preOrder(const ClusterTree& tree) {
-    std::vector<Id> order{tree.root};
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        for (Id c : tree.nodes[order[i]].children)
-            order.push_back(c);
-    }
-    return order;
-}
-
-// Tile boxes that nest by construction (3D Tiles 1.1, 5.5: a tile's volume encloses its
-// children's and its content): the node's box padded to the minimum thickness, grown by its
-// proxy's vertices (a proxy may stray up to its error budget outside the originals) and by
-// its children's tile boxes, bottom-up.
-std::vector<Aabb> tileBoxes(const ClusterTree& tree, const BakeResult& bake) {
-    std::vector<Aabb> boxes(tree.nodes.size());
-    const std::vector<Id> order = preOrder(tree);
-    for (auto it = order.rbegin(); it != order.rend(); ++it) {
-        const ClusterNode& node = tree.nodes[*it];
-        Aabb b = node.box;
-        const glm::dvec3 c = b.center();
-        const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(kMinHalfExtent));
-        b.expand(c - h);
-        b.expand(c + h);
-        if (*it < bake.nodes.size()) {
-            const ProxyMesh& proxy = bake.nodes[*it].proxy;
-            for (const glm::vec3& p : proxy.positions)
-                b.expand(proxy.origin + glm::dvec3(p));
-        }
-        for (Id child : node.children)
-            b.expand(boxes[child]);
-        boxes[*it] = b;
-    }
-    return boxes;
-}
-
-// The proxy error made monotone: a parent's error is at least its children's (3D Tiles
-// expects geometric error to decrease toward the leaves). Leaves: 0.
-std::vector<double> monotoneErrors(const ClusterTree& tree, const BakeResult& bake) {
-    std::vector<double> err(tree.nodes.size(), 0.0);
-    std::vector<Id> order{tree.root}, post;
-    while (!order.empty()) {
-        const Id n = order.back();
-        order.pop_back();
-        post.push_back(n);
-        for (Id c : tree.nodes[n].children)
-            order.push_back(c);
-    }
-    for (auto it = post.rbegin(); it != post.rend(); ++it) {
-        const ClusterNode& node = tree.nodes[*it];
-        if (node.isLeaf()) continue;
-        double e = *it < bake.nodes.size() ? bake.nodes[*it].errorBudget : 0.0;
-        for (Id c : node.children)
-            e = std::max(e, err[c]);
-        err[*it] = e;
-    }
-    return err;
-}
-
-nlohmann::json tile(const ClusterTree& tree, Id n, const std::vector<double>& err,
-                    const std::vector<Aabb>& boxes, const std::vector<bool>& hasContent) {
-    const ClusterNode& node = tree.nodes[n];
-    nlohmann::json t;
-    t["boundingVolume"] = {{"box", boxVolume(boxes[n])}};
-    t["geometricError"] = err[n];
-    if (hasContent[n]) t["content"] = {{"uri", "tiles/" + std::to_string(n) + ".glb"}};
-    if (!node.isLeaf()) {
-        nlohmann::json children = nlohmann::json::array();
-        for (Id c : node.children)
-            children.push_back(tile(tree, c, err, boxes, hasContent));
-        t["children"] = std::move(children);
+nlohmann::json matrixJson(const glm::dmat4& m) {
+    nlohmann::json t = nlohmann::json::array();
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            // 0 and 1 as integers (no "-0.0", and most of a translation's 16 numbers are these)
+            if (m[c][r] == 0.0 || m[c][r] == 1.0)
+                t.push_back(static_cast<int>(m[c][r]));
+            else
+                t.push_back(m[c][r]);
     }
     return t;
 }
 
+// A Y-up box as a Z-up 3D Tiles box, rounded outward.
+nlohmann::json boxVolume(const Aabb& b) {
+    const glm::dvec3 cy = b.center(), hy = b.extent() * 0.5;
+    const glm::dvec3 c(cy.x, -cy.z, cy.y), h(hy.x, hy.z, hy.y);
+    nlohmann::json box = nlohmann::json::array();
+    glm::dvec3 half;
+    for (int a = 0; a < 3; ++a) {
+        const double rc = shortNumber(c[a]);
+        box.push_back(rc == 0.0 ? 0.0 : rc);
+        half[a] = shortNumberUp(h[a] + std::abs(c[a] - rc));
+    }
+    for (int a = 0; a < 3; ++a) {
+        for (int k = 0; k < 3; ++k)
+            box.push_back(a == k ? half[a] : 0.0);
+    }
+    return box;
+}
+
+Aabb localBox(const TilePlan& t) {
+    const glm::dvec3 o(t.frame[3]);
+    return Aabb{t.worldBox.min - o, t.worldBox.max - o};
+}
+
+nlohmann::json tile(const PackageLayout& layout, int index,
+                    const std::vector<std::string>& contentUris,
+                    const std::optional<GeoLocation>& geo) {
+    const TilePlan& t = layout.tiles[static_cast<std::size_t>(index)];
+    nlohmann::json j;
+    glm::dmat4 m = t.frame;
+    if (t.parent >= 0) {
+        const glm::dvec3 parentOrigin(layout.tiles[static_cast<std::size_t>(t.parent)].frame[3]);
+        m[3] -= glm::dvec4(parentOrigin, 0.0); // parents' frames are translations
+    }
+    glm::dmat4 z = kYupToZup * m * glm::inverse(kYupToZup);
+    if (t.parent < 0 && geo) z = enuToEcef(*geo) * z;
+    if (z != glm::dmat4(1.0)) j["transform"] = matrixJson(z);
+    j["boundingVolume"] = {{"box", boxVolume(localBox(t))}};
+    j["geometricError"] = shortNumberUp(t.geometricError);
+    if (t.content >= 0) j["content"] = {{"uri", contentUris[static_cast<std::size_t>(t.content)]}};
+    if (!t.children.empty()) {
+        nlohmann::json children = nlohmann::json::array();
+        for (int c : t.children)
+            children.push_back(tile(layout, c, contentUris, geo));
+        j["children"] = std::move(children);
+    }
+    return j;
+}
+
 } // namespace
 
-nlohmann::json buildTileset(const ClusterTree& tree, const BakeResult& bake,
-                            const std::vector<bool>& hasContent,
+nlohmann::json buildTileset(const PackageLayout& layout,
+                            const std::vector<std::string>& contentUris,
                             const std::optional<GeoLocation>& geo) {
-    std::vector<double> err = monotoneErrors(tree, bake);
-    const std::vector<Aabb> boxes = tileBoxes(tree, bake);
-    // A root without a proxy (ProxyEconomy.h) draws nothing itself: its error is the whole
-    // model, so a runtime refines it whenever the model covers more than the pixel error.
-    if (rootHasNoProxy(tree, bake)) err[tree.root] = std::max(err[tree.root], boxes[tree.root].diagonal());
-    nlohmann::json root = tile(tree, tree.root, err, boxes, hasContent);
+    nlohmann::json root = tile(layout, 0, contentUris, geo);
     root["refine"] = "REPLACE"; // inherited by every descendant
-    if (geo) {
-        const glm::dmat4 m = enuToEcef(*geo);
-        nlohmann::json t = nlohmann::json::array();
-        for (int c = 0; c < 4; ++c) {
-            for (int r = 0; r < 4; ++r)
-                t.push_back(m[c][r]);
-        }
-        root["transform"] = std::move(t);
-    }
     // Error when nothing is drawn: the whole model's size, so a runtime shows the root as soon
     // as the tileset is in view.
-    const double top = std::max(boxes[tree.root].diagonal(), err[tree.root] * 2.0);
+    const TilePlan& r = layout.tiles[0];
+    const double top = std::max(r.worldBox.diagonal(), r.geometricError * 2.0);
     return {
         {"asset", {{"version", "1.1"}, {"generator", std::string("HLOD Studio ") + HLOD_VERSION}}},
-        {"geometricError", std::max(top, 1e-3)},
+        {"geometricError", shortNumberUp(std::max(top, 1e-3))},
         {"root", std::move(root)}};
 }
 

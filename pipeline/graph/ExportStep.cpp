@@ -46,6 +46,7 @@ ExportResult exportPackage(const BuildInputs& in, const ExportOptions& options,
     PackageOptions package;
     package.inputs = in.inputs;
     package.geo = options.geo;
+    package.compression = options.compression;
     nlohmann::json summary = buildTreeJson(in.scene, in.tree, in.bake, out.info);
     summary.erase("nodes"); // the package manifest has its own node list
     package.parameters = summary.value("parameters", nlohmann::json::object());
@@ -53,6 +54,7 @@ ExportResult exportPackage(const BuildInputs& in, const ExportOptions& options,
     out.written =
         writePackage(options.output, in.scene, in.tree, in.bake, in.bakeParams, package, progress);
     out.writeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    out.source = sourceFootprint(in.scene);
     return out;
 }
 

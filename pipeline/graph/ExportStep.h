@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
 #include "pipeline/graph/HandEdits.h"
 #include "pipeline/proxy/BuildOutput.h"
@@ -23,12 +24,14 @@ struct ExportOptions {
     std::filesystem::path output;
     bool dlod = true;               // compute the DLOD chain row (costs a few seconds)
     std::optional<GeoLocation> geo; // root transform on the globe; local frame otherwise
+    GlbCompression compression = GlbCompression::Meshopt;
 };
 
 struct ExportResult {
     std::filesystem::path output;
     BuildInfo info; // inputs, parameters, statistics rows, proxy share
     PackageSummary written;
+    DiskFootprint source; // the scene files and what they reference, on disk
     double dlodSeconds = 0.0;
     double writeSeconds = 0.0;
 };

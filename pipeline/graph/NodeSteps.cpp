@@ -72,6 +72,7 @@ NodeOutput runExport(const GraphNode& node, const NodeOutput& in, const Progress
     ExportOptions options;
     options.output = paramText(node.params, "output");
     options.dlod = paramBool(node.params, "dlod");
+    options.compression = glbCompressionFromString(paramText(node.params, "compression"));
     if (const std::string geo = paramText(node.params, "geo"); !geo.empty())
         options.geo = parseGeoLocation(geo);
     const BuildInputs inputs{*in.scene, *in.tree,      *in.bake, in.cluster,

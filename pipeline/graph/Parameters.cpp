@@ -138,6 +138,13 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
              "Compute the DLOD chain baseline row of the statistics table", "--no-dlod");
     dlod.cliNegated = true;
     v.push_back(dlod);
+    v.push_back(choices(decl("compression", "Compression", T::Enum, N::Export,
+                             std::string("meshopt"), "",
+                             "Geometry of the package's tiles: quantised and compressed "
+                             "(KHR_mesh_quantization + EXT_meshopt_compression, what 3D Tiles "
+                             "runtimes decode) or plain glTF floats",
+                             "--compression"),
+                        {"meshopt", "none"}));
     ParamDecl geo = decl("geo", "Geolocation", T::Text, N::Export, std::string(), "",
                          "lat,lon,height (degrees, degrees, metres): places the root on the "
                          "globe; empty = local frame",

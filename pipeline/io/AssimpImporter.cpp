@@ -17,6 +17,7 @@
 #include <assimp/scene.h>
 
 #include <map>
+#include <set>
 
 #include "pipeline/core/Error.h"
 #include "pipeline/io/Import.h"
@@ -42,13 +43,17 @@ public:
             if (refused_.empty()) refused_ = file;
             return nullptr;
         }
-        return Assimp::DefaultIOSystem::Open(file, mode);
+        Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
+        if (stream) opened_.insert(fs::absolute(file).lexically_normal());
+        return stream;
     }
     const std::string& refused() const { return refused_; }
+    const std::set<fs::path>& opened() const { return opened_; }
 
 private:
     fs::path folder_;
     mutable std::string refused_;
+    std::set<fs::path> opened_; // every file a loader read (the scene and its companions)
 };
 
 glm::dmat4 toGlm(const aiMatrix4x4& m) {
@@ -251,6 +256,9 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
     }
     Scene scene;
     scene.sourceFiles.push_back(file);
+    for (const fs::path& f : io->opened()) {
+        if (f != fs::absolute(file).lexically_normal()) scene.referencedFiles.push_back(f);
+    }
     MaterialReader materials(as, folder);
     std::vector<Id> materialIds;
     for (unsigned i = 0; i < as->mNumMaterials; ++i) {

@@ -1,17 +1,25 @@
-// Minimal glTF 2.0 binary (GLB) writer for one triangle mesh: positions, optional normals,
-// texture coordinates and vertex colours (COLOR_0 as normalised unsigned bytes, linear), one
-// PBR material (base colour factor and optional embedded base colour texture, metallic 0,
-// roughness 1; alpha below 1 makes it BLEND), one node carrying the mesh's
-// translation in double precision (so world-space proxies far from the origin stay exact).
+// glTF 2.0 binary (GLB) writer for a flat scene of triangle meshes: each mesh one primitive with
+// positions, optional normals, texture coordinates and vertex colours (COLOR_0 as normalised
+// unsigned bytes, linear) and one PBR material (base colour factor and optional base colour
+// texture, metallic 0, roughness 1; alpha below 1 makes it BLEND); each node places one mesh
+// (or none) with a translation / rotation / scale in double precision (so content far from
+// the origin stays exact), all nodes roots of the one scene. Identical materials are written
+// once; a mesh referenced by several nodes is stored once (glTF instancing by reference).
 // Follows the Khronos glTF 2.0 specification, section 4.4 (GLB container) and 5 (JSON
 // schema): little-endian chunks padded to 4 bytes, POSITION min/max present, index type the
 // smallest of unsigned short / unsigned int that fits.
 //
+// Compression (GlbCompression::Meshopt): KHR_mesh_quantization + EXT_meshopt_compression, both
+// required (GlbMeshopt.h: 16-bit grid positions whose offset and step the referencing nodes'
+// transforms carry, octahedral normals, exponential uvs, meshopt vertex and index codecs). The
+// compressed streams live in buffer 0 (the BIN chunk); buffer 1 is the extension's fallback
+// buffer without data. None: plain float attributes, nothing required.
+//
 // Output bytes depend only on the input (deterministic, suitable for content hashing).
-// An empty mesh (no triangles) produces a valid file whose node has no mesh.
-// Failure: Error(InvalidArgument) when stream sizes disagree or an index is out of range;
-// writeGlbFile throws Error(Io) naming the file. writeGlbFile writes a temporary file next to
-// the target and renames it, so a reader never sees half a file.
+// A mesh without triangles is not written (its nodes carry no mesh).
+// Failure: Error(InvalidArgument) when stream sizes disagree, an index is out of range or a node
+// names a mesh that does not exist; writeGlbFile throws Error(Io) naming the file. writeGlbFile
+// writes a temporary file next to the target and renames it, so a reader never sees half a file.
 #pragma once
 
 #include <cstdint>
@@ -22,17 +30,26 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/io/GltfTrs.h"
+
 namespace hlod {
+
+enum class GlbCompression { None, Meshopt };
+
+const char* toString(GlbCompression compression);
+// Parses "none", "meshopt"; throws Error(InvalidArgument) otherwise.
+GlbCompression glbCompressionFromString(const std::string& text);
 
 struct GlbMesh {
     std::string name;
-    glm::dvec3 translation{0.0}; // node translation, metres
+    glm::dvec3 translation{0.0}; // single-mesh encodeGlb: its node's translation, metres
     std::span<const glm::vec3> positions;
     std::span<const glm::vec3> normals;  // empty or one per position
     std::span<const glm::vec2> uvs;      // empty or one per position
     std::span<const glm::u8vec4> colors; // empty or one per position (linear RGBA)
     std::span<const std::uint32_t> indices;
     glm::vec4 baseColor{1.0f};
+    std::string materialName; // empty: the mesh's name
     // Optional base colour texture (PNG or JPEG bytes, see TextureImage.h), embedded in the BIN
     // chunk and sampled with TEXCOORD_0 (repeat wrap, linear filtering). Ignored without uvs.
     std::span<const std::uint8_t> image;
@@ -40,13 +57,32 @@ struct GlbMesh {
     // Or a texture file shared by several GLBs: a relative URI (no "..", no scheme) resolved
     // against the GLB's folder. Used when `image` is empty; also ignored without uvs.
     std::string imageUri;
+    // Meshopt only: the position grid asked for (metres of the mesh's frame; 0 = the finest
+    // 16 bits allow). The grid used is positionGridStep (GlbMeshopt.h) of it.
+    double positionStep = 0.0;
 };
 
-std::vector<std::uint8_t> encodeGlb(const GlbMesh& mesh);
+struct GlbNode {
+    std::string name;
+    int mesh = -1; // index into GlbScene::meshes; -1 = an empty node
+    Trs trs;       // the mesh's frame in the scene (see GltfTrs.h)
+};
+
+struct GlbScene {
+    std::vector<GlbMesh> meshes;
+    std::vector<GlbNode> nodes; // roots of the scene, in this order
+    GlbCompression compression = GlbCompression::None;
+};
+
+std::vector<std::uint8_t> encodeGlb(const GlbScene& scene);
+
+// One mesh under one node translated by mesh.translation.
+std::vector<std::uint8_t> encodeGlb(const GlbMesh& mesh,
+                                    GlbCompression compression = GlbCompression::None);
 
 void writeGlbFile(const std::filesystem::path& file, const GlbMesh& mesh);
 
-// Bytes of the GLB encodeGlb would produce, without building it (for statistics).
+// Bytes of the GLB encodeGlb(mesh) produces (for statistics).
 std::size_t glbByteSize(const GlbMesh& mesh);
 
 } // namespace hlod

@@ -7,6 +7,9 @@
 // against its buffer view and buffer here, counts are capped before allocating, external
 // URIs must stay inside the scene's folder (our own file-system callbacks refuse the rest),
 // and the result goes through validateScene().
+// EXT_meshopt_compression (gltfpack output, our own packages): decoded with meshoptimizer into a
+// plain GLB in memory before tinygltf parses it (GltfMeshopt.h).
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -21,6 +24,7 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/io/GltfAccessor.h"
+#include "pipeline/io/GltfMeshopt.h"
 #include "pipeline/io/Import.h"
 #include "pipeline/io/TextureMean.h"
 
@@ -36,23 +40,30 @@ struct LoadContext {
     std::string refused; // first external path refused, for the error message
     std::map<int, glm::vec4> imageMeans;
     std::map<int, std::string> imageUris;
+    std::set<fs::path> referenced; // files read besides the scene file (buffers, images)
 };
 
+// tinygltf also probes the bare relative URI ("./scene.bin"): that names the scene's folder too.
+fs::path resolved(const std::string& path, const LoadContext& ctx) {
+    const fs::path p(path);
+    return p.is_absolute() ? p : ctx.folder / p;
+}
+
+// The URIs themselves are checked before tinygltf runs (checkExternalUris); what it probes
+// besides (the URI relative to the working folder) simply does not exist outside the folder.
 bool fileExists(const std::string& path, void* user) {
     auto* ctx = static_cast<LoadContext*>(user);
-    if (!isInsideFolder(path, ctx->folder)) {
-        if (ctx->refused.empty()) ctx->refused = path;
-        return false;
-    }
+    if (!isInsideFolder(resolved(path, *ctx), ctx->folder)) return false;
     std::error_code ec;
-    return fs::is_regular_file(path, ec);
+    return fs::is_regular_file(resolved(path, *ctx), ec);
 }
 
 std::string expandPath(const std::string& path, void*) { return path; }
 
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& pathIn,
                    void* user) {
     auto* ctx = static_cast<LoadContext*>(user);
+    const std::string path = resolved(pathIn, *ctx).string();
     if (!isInsideFolder(path, ctx->folder)) {
         if (ctx->refused.empty()) ctx->refused = path;
         if (err) *err += "refused to read '" + path + "' outside the scene folder\n";
@@ -71,6 +82,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
     in.seekg(0);
     out->resize(static_cast<std::size_t>(size));
     in.read(reinterpret_cast<char*>(out->data()), size);
+    if (in) ctx->referenced.insert(fs::path(path).lexically_normal());
     return static_cast<bool>(in);
 }
 
@@ -261,6 +273,154 @@ void importNodes(const tinygltf::Model& model, const std::vector<std::vector<Id>
     }
 }
 
+std::vector<std::uint8_t> readFileBytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    if (!in) throw Error(ErrorCode::Io, file, "cannot open the file");
+    const std::streamsize size = in.tellg();
+    if (size < 0 || size > (std::streamsize(1) << 32))
+        throw Error(ErrorCode::TooLarge, file, "larger than 4 GiB");
+    in.seekg(0);
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+    in.read(reinterpret_cast<char*>(bytes.data()), size);
+    if (!in) throw Error(ErrorCode::Io, file, "cannot read the file");
+    return bytes;
+}
+
+// RFC 4648 base64 (the payload of a data: URI); nullopt on a character outside the alphabet.
+std::optional<std::vector<std::uint8_t>> decodeBase64(std::string_view text) {
+    std::vector<std::uint8_t> out;
+    std::uint32_t acc = 0;
+    int bits = 0;
+    for (char c : text) {
+        int v;
+        if (c >= 'A' && c <= 'Z')
+            v = c - 'A';
+        else if (c >= 'a' && c <= 'z')
+            v = c - 'a' + 26;
+        else if (c >= '0' && c <= '9')
+            v = c - '0' + 52;
+        else if (c == '+')
+            v = 62;
+        else if (c == '/')
+            v = 63;
+        else if (c == '=')
+            break;
+        else
+            return std::nullopt;
+        acc = (acc << 6) | static_cast<std::uint32_t>(v);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            out.push_back(static_cast<std::uint8_t>(acc >> bits));
+        }
+    }
+    return out;
+}
+
+// The bytes of every buffer of a meshopt-compressed document (fallback buffers stay empty):
+// the GLB chunk, data: URIs, or files inside the scene's folder.
+std::vector<std::vector<std::uint8_t>>
+meshoptBuffers(const nlohmann::json& gltf, std::vector<std::uint8_t> glbChunk, LoadContext& ctx) {
+    std::vector<std::vector<std::uint8_t>> out;
+    const nlohmann::json& buffers = gltf.value("buffers", nlohmann::json::array());
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        out.emplace_back();
+        if (isMeshoptFallback(gltf, i)) continue;
+        const std::string uri =
+            buffers[i].is_object() ? buffers[i].value("uri", std::string()) : std::string();
+        const std::string name = "buffer " + std::to_string(i);
+        if (uri.empty()) {
+            if (i != 0 || glbChunk.empty())
+                throw Error(ErrorCode::Malformed, ctx.file, name + " has no data");
+            out.back() = std::move(glbChunk);
+        } else if (uri.rfind("data:", 0) == 0) {
+            const auto comma = uri.find(";base64,");
+            auto bytes = comma == std::string::npos
+                             ? std::nullopt
+                             : decodeBase64(std::string_view(uri).substr(comma + 8));
+            if (!bytes) throw Error(ErrorCode::Malformed, ctx.file, name + ": bad data URI");
+            out.back() = std::move(*bytes);
+        } else {
+            const fs::path p = (ctx.folder / uri).lexically_normal();
+            if (!isInsideFolder(p, ctx.folder))
+                throw Error(ErrorCode::UnsafePath, ctx.file,
+                            "refers to '" + uri + "' outside the scene's folder");
+            std::error_code ec;
+            if (!fs::is_regular_file(p, ec))
+                throw Error(ErrorCode::Malformed, ctx.file,
+                            name + " '" + uri + "' is missing next to the scene");
+            out.back() = readFileBytes(p);
+            ctx.referenced.insert(p);
+        }
+    }
+    return out;
+}
+
+// %XX escapes of a URI decoded (RFC 3986), as tinygltf does before opening the file.
+std::string percentDecoded(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+            i += 2;
+        } else {
+            out.push_back(uri[i]);
+        }
+    }
+    return out;
+}
+
+// Buffer and image URIs must name files inside the scene's folder (data: URIs aside).
+void checkExternalUris(const nlohmann::json& doc, const LoadContext& ctx) {
+    for (const char* list : {"buffers", "images"}) {
+        if (!doc.contains(list) || !doc[list].is_array()) continue;
+        for (const auto& item : doc[list]) {
+            if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+            const std::string uri = item["uri"].get<std::string>();
+            if (uri.rfind("data:", 0) == 0) continue;
+            const fs::path p(percentDecoded(uri));
+            if (p.is_absolute() || !isInsideFolder(ctx.folder / p, ctx.folder))
+                throw Error(ErrorCode::UnsafePath, ctx.file,
+                            "refers to '" + uri + "' outside the scene's folder");
+        }
+    }
+}
+
+// Parses the file with tinygltf; a document using EXT_meshopt_compression is decoded into a
+// plain GLB first. False with `err` set when tinygltf refuses the file.
+bool loadModel(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& err,
+               LoadContext& ctx, const ImportOptions& options) {
+    std::string ext = ctx.file.extension().string();
+    for (char& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool glb = ext == ".glb";
+    std::vector<std::uint8_t> bytes = readFileBytes(ctx.file);
+    GlbChunks chunks;
+    if (glb)
+        chunks = splitGlb(bytes, ctx.file);
+    else
+        chunks.json.assign(bytes.begin(), bytes.end());
+    const std::string folder = ctx.folder.string();
+    std::string warn;
+    nlohmann::json doc = nlohmann::json::parse(chunks.json, nullptr, false);
+    if (!doc.is_discarded()) checkExternalUris(doc, ctx);
+    if (!doc.is_discarded() && usesMeshopt(doc)) {
+        auto buffers = meshoptBuffers(doc, std::move(chunks.bin), ctx);
+        const std::vector<std::uint8_t> plain =
+            decodeMeshoptGltf(std::move(doc), buffers, ctx.file, options.maxElements);
+        return loader.LoadBinaryFromMemory(&model, &err, &warn, plain.data(),
+                                           static_cast<unsigned>(plain.size()), folder);
+    }
+    if (glb)
+        return loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                           static_cast<unsigned>(bytes.size()), folder);
+    return loader.LoadASCIIFromString(&model, &err, &warn,
+                                      reinterpret_cast<const char*>(bytes.data()),
+                                      static_cast<unsigned>(bytes.size()), folder);
+}
+
 } // namespace
 
 Scene importGltf(const fs::path& file, const ImportOptions& options) {
@@ -273,15 +433,12 @@ Scene importGltf(const fs::path& file, const ImportOptions& options) {
     loader.SetFsCallbacks(fsCallbacks);
     loader.SetImageLoader(&loadImage, &ctx);
     tinygltf::Model model;
-    std::string err, warn;
-    const std::string path = fs::absolute(file).string();
-    std::string ext = file.extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::string err;
     bool ok = false;
     try {
-        ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        ok = loadModel(loader, model, err, ctx, options);
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Malformed, file, std::string("glTF parse failed: ") + e.what());
     }
@@ -296,6 +453,7 @@ Scene importGltf(const fs::path& file, const ImportOptions& options) {
     checkRequiredExtensions(model, file);
     Scene scene;
     scene.sourceFiles.push_back(file);
+    scene.referencedFiles.assign(ctx.referenced.begin(), ctx.referenced.end());
     const std::vector<Id> materials = importMaterials(model, ctx, scene);
     const auto meshes = importMeshes(model, materials, options, file, scene);
     importNodes(model, meshes, file, scene);

@@ -98,6 +98,8 @@ void Scene::append(Scene&& other, const std::string& name) {
     }
     for (auto& f : other.sourceFiles)
         sourceFiles.push_back(std::move(f));
+    for (auto& f : other.referencedFiles)
+        referencedFiles.push_back(std::move(f));
     updateWorldTransforms();
 }
 

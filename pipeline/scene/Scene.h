@@ -81,6 +81,9 @@ public:
     std::vector<Material> materials; // materials[0] always exists (default grey)
     std::vector<MeshInstance> instances;
     std::vector<std::filesystem::path> sourceFiles;
+    // Files the source files pulled in (glTF buffers and images, material libraries...),
+    // absolute, as the importers read them: with sourceFiles, what the scene costs on disk.
+    std::vector<std::filesystem::path> referencedFiles;
 
     Scene();
 

@@ -12,7 +12,7 @@ namespace hlod {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x534c4448; // "HDLS"
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 class Writer {
 public:
@@ -107,6 +107,9 @@ std::string writeSceneBinary(const Scene& s) {
     w.pod<std::uint64_t>(s.sourceFiles.size());
     for (const auto& f : s.sourceFiles)
         w.str(f.string());
+    w.pod<std::uint64_t>(s.referencedFiles.size());
+    for (const auto& f : s.referencedFiles)
+        w.str(f.string());
     return std::move(w.out);
 }
 
@@ -142,6 +145,9 @@ Scene readSceneBinary(const std::string& bytes, const std::filesystem::path& ori
     s.instances = r.array<MeshInstance>();
     s.sourceFiles.resize(r.count(8));
     for (auto& f : s.sourceFiles)
+        f = r.str();
+    s.referencedFiles.resize(r.count(8));
+    for (auto& f : s.referencedFiles)
         f = r.str();
     // Consistent links make the walk from the root finite: every child names its parent.
     if (s.nodes.empty() || s.nodes[0].parent != kNoId) r.fail();

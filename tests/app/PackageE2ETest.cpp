@@ -11,9 +11,12 @@
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <set>
+#include <stb_image.h>
 
 #include "../TilesetRules.h"
 #include "RunCli.h"
+#include "pipeline/eval/ImageError.h"
 
 namespace fs = std::filesystem;
 using hlod::test::runCli;
@@ -102,16 +105,52 @@ std::string sceneName(const ::testing::TestParamInfo<SharedScene>& info) {
     return n;
 }
 
-} // namespace
-
-// Build the package of a real scene, validate every GLB with the Khronos validator, check the
-// tileset rules tile by tile, and read it back with `hlod info`: the leaves are the original
-// meshes, so the package must count exactly what the source counts.
-TEST_P(ScenePackage, ValidatesAndReadsBackWithTheSourceCounts) {
-    const SharedScene& sc = GetParam();
+std::vector<std::string> sceneArgs(const SharedScene& sc) {
     std::vector<std::string> source{std::string(HLOD_TEST_DATA_DIR) + "/scenes/" + sc.folder};
     source.insert(source.end(), sc.extraArgs.begin(), sc.extraArgs.end());
+    return source;
+}
 
+// `hlod build SOURCE -o PKG --json ...` at the defaults; the JSON summary.
+nlohmann::json buildPackage(const std::vector<std::string>& source, const fs::path& pkg,
+                            const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> build{"build"};
+    build.insert(build.end(), source.begin(), source.end());
+    build.insert(build.end(),
+                 {"-o", pkg.string(), "--threads", "2", "--no-dlod", "--no-cache", "--json"});
+    build.insert(build.end(), extra.begin(), extra.end());
+    const auto b = runCli(build, 900);
+    EXPECT_EQ(b.exitCode, 0) << b.err;
+    return b.exitCode == 0 ? nlohmann::json::parse(b.out) : nlohmann::json::object();
+}
+
+// Every GLB of the package is some tile's content and every content exists (files may be
+// shared by several tiles).
+void expectGlbsAreTheContents(const fs::path& pkg) {
+    std::set<std::string> glbs, uris;
+    for (const auto& e : fs::recursive_directory_iterator(pkg))
+        if (e.path().extension() == ".glb") glbs.insert(fs::relative(e.path(), pkg).string());
+    std::ifstream in(pkg / "tileset.json");
+    std::vector<nlohmann::json> stack{nlohmann::json::parse(in)["root"]};
+    while (!stack.empty()) {
+        const nlohmann::json t = stack.back();
+        stack.pop_back();
+        if (t.contains("content")) uris.insert(t["content"]["uri"].get<std::string>());
+        for (const auto& c : t.value("children", nlohmann::json::array()))
+            stack.push_back(c);
+    }
+    EXPECT_EQ(glbs, uris);
+}
+
+} // namespace
+
+// Build the package of a real scene at the defaults (compressed), check it takes at most the
+// source's bytes on disk, check the tileset rules tile by tile (every content vertex decoded
+// and found inside its tile's box), validate every GLB with the Khronos validator, and read it
+// back with `hlod info`: the leaves are the original meshes, so the package must count exactly
+// what the source counts.
+TEST_P(ScenePackage, CompressedPackageIsSmallerThanItsSourceAndReadsBack) {
+    const std::vector<std::string> source = sceneArgs(GetParam());
     std::vector<std::string> info{"info"};
     info.insert(info.end(), source.begin(), source.end());
     info.push_back("--json");
@@ -121,22 +160,20 @@ TEST_P(ScenePackage, ValidatesAndReadsBackWithTheSourceCounts) {
 
     TempDir tmp;
     const fs::path pkg = tmp.path / "pkg";
-    std::vector<std::string> build{"build"};
-    build.insert(build.end(), source.begin(), source.end());
-    build.insert(build.end(), {"-o", pkg.string(), "--threads", "2", "--no-dlod", "--no-cache"});
-    const auto b = runCli(build, 900);
-    ASSERT_EQ(b.exitCode, 0) << b.err;
+    const nlohmann::json summary = buildPackage(source, pkg);
+    ASSERT_TRUE(summary.contains("package"));
+    // Issue 18: at most the source's bytes on disk (scene file plus the files it references).
+    const double onDisk = summary["package"]["bytes_on_disk"].get<double>();
+    const double sourceOnDisk = summary["source"]["bytes_on_disk"].get<double>();
+    EXPECT_GT(sourceOnDisk, 0.0);
+    EXPECT_LE(onDisk, 1.0 * sourceOnDisk) << summary.dump(1);
+    RecordProperty("disk_ratio", std::to_string(onDisk / sourceOnDisk));
 
     std::ifstream in(pkg / "tileset.json");
-    const auto ts = nlohmann::json::parse(in);
-    EXPECT_EQ(ts["asset"]["version"], "1.1");
-    EXPECT_EQ(ts["root"]["refine"], "REPLACE");
-    std::size_t tiles = 0, contents = 0;
-    hlod::test::checkTile(ts["root"], pkg, tiles, &contents);
-    std::size_t glbs = 0;
-    for (const auto& e : fs::recursive_directory_iterator(pkg))
-        glbs += e.path().extension() == ".glb" ? 1 : 0;
-    EXPECT_EQ(glbs, contents); // every GLB is some tile's content, every content exists
+    hlod::test::TileCheck tc;
+    tc.dir = pkg;
+    hlod::test::checkTileset(nlohmann::json::parse(in), tc);
+    expectGlbsAreTheContents(pkg);
 
     const auto v = runProcess({"node", webScript("validate-glb.mjs"), pkg.string()}, 900);
     EXPECT_EQ(v.exitCode, 0) << v.out.substr(0, 4000) << v.err;
@@ -148,4 +185,89 @@ TEST_P(ScenePackage, ValidatesAndReadsBackWithTheSourceCounts) {
     EXPECT_EQ(counts["instances"], srcCounts["instances"]);
 }
 
+// The plain package (--compression none) is what lets the validator see the geometry itself:
+// accessor bounds, index ranges, normals.
+TEST_P(ScenePackage, PlainPackageValidates) {
+    TempDir tmp;
+    const fs::path pkg = tmp.path / "pkg";
+    buildPackage(sceneArgs(GetParam()), pkg, {"--compression", "none"});
+    const auto v = runProcess({"node", webScript("validate-glb.mjs"), pkg.string()}, 900);
+    EXPECT_EQ(v.exitCode, 0) << v.out.substr(0, 4000) << v.err;
+    expectGlbsAreTheContents(pkg);
+}
+
 INSTANTIATE_TEST_SUITE_P(SharedScenes, ScenePackage, ::testing::ValuesIn(kScenes), sceneName);
+
+namespace {
+
+hlod::RgbImage readPng(const fs::path& file) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load(file.string().c_str(), &w, &h, &n, 3);
+    hlod::RgbImage img;
+    if (!data) return img;
+    img.width = w;
+    img.height = h;
+    img.pixels.assign(data, data + static_cast<std::size_t>(w) * h * 3);
+    stbi_image_free(data);
+    return img;
+}
+
+} // namespace
+
+// The compressed package drawn by the real runtime (three.js + 3d-tiles-renderer with its
+// meshopt decoder) looks like the plain one: the same tiles at the same distances, geometry
+// within a fraction of a pixel, normals within a degree.
+TEST(PackageE2E, CompressedPackageRendersLikeThePlainOne) {
+    const std::vector<std::string> source{std::string(HLOD_TEST_DATA_DIR) +
+                                          "/scenes/cg57-cruiser/CG-57.ac"};
+    TempDir tmp;
+    buildPackage(source, tmp.path / "packed");
+    buildPackage(source, tmp.path / "plain", {"--compression", "none"});
+    std::vector<hlod::RgbImage> images;
+    for (const char* name : {"packed", "plain"}) {
+        const fs::path png = tmp.path / (std::string(name) + ".png");
+        const auto r = runProcess({"node", webScript("render-tileset.mjs"),
+                                   (tmp.path / name).string(), png.string(), "--error-target", "2"},
+                                  300);
+        ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+        const auto report = nlohmann::json::parse(r.out);
+        EXPECT_GT(report["tilesLoaded"].get<int>(), 1) << name; // refined below the root
+        images.push_back(readPng(png));
+        ASSERT_GT(images.back().width, 0);
+    }
+    const hlod::ImageError e = hlod::compareImages(images[1], images[0]);
+    EXPECT_GE(e.psnrDb, 35.0);
+    EXPECT_LE(e.diffShare, 0.01);
+    RecordProperty("psnr_db", std::to_string(e.psnrDb));
+}
+
+// The instanced plant of the issue: the engine placed 105 times, sharing its meshes. Its
+// package must stay within 10x the source on disk (it was 185x) and read back whole.
+TEST(PackageE2E, TiledEngineStaysWithinTenTimesItsSource) {
+    TempDir tmp;
+    const fs::path scene = tmp.path / "plant.glb";
+    const auto make = runProcess(
+        {"python3", std::string(HLOD_TEST_SOURCE_DIR) + "/../scripts/make-tiled-scene.py",
+         std::string(HLOD_TEST_DATA_DIR) + "/scenes/engine-2cylinder/2CylinderEngine.glb",
+         scene.string(), "105"},
+        120);
+    ASSERT_EQ(make.exitCode, 0) << make.err;
+    const fs::path pkg = tmp.path / "pkg";
+    const nlohmann::json summary = buildPackage({scene.string()}, pkg);
+    ASSERT_TRUE(summary.contains("package"));
+    const double ratio = summary["package"]["bytes_on_disk"].get<double>() /
+                         summary["source"]["bytes_on_disk"].get<double>();
+    EXPECT_LE(ratio, 10.0);
+    RecordProperty("disk_ratio", std::to_string(ratio));
+    // Shared files under nested tile transforms: every copy's box still holds its content.
+    std::ifstream in(pkg / "tileset.json");
+    hlod::test::TileCheck tc;
+    tc.dir = pkg;
+    hlod::test::checkTileset(nlohmann::json::parse(in), tc);
+    EXPECT_GT(tc.contents, 20 * summary["package"]["files"].get<std::size_t>());
+    const auto i = runCli({"info", pkg.string(), "--json"}, 600);
+    ASSERT_EQ(i.exitCode, 0) << i.err;
+    const auto counts = nlohmann::json::parse(i.out)["counts"];
+    EXPECT_EQ(counts["instances"], 12075); // 115 meshes x 105 copies
+    EXPECT_EQ(counts["triangles"], 12757080);
+}

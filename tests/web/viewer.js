@@ -7,7 +7,9 @@
 // bg (background colour as 6 hex digits, default 30343c).
 
 import * as THREE from 'three';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 import { TilesRenderer } from '3d-tiles-renderer';
+import { GLTFExtensionsPlugin } from '3d-tiles-renderer/plugins';
 
 const params = new URLSearchParams(location.search);
 const num = (name, fallback) => {
@@ -48,6 +50,9 @@ scene.add(sun, sun.target);
 
 const tiles = new TilesRenderer('/tiles/tileset.json');
 tiles.errorTarget = errorTarget;
+// Packages are compressed with EXT_meshopt_compression + KHR_mesh_quantization by default:
+// three.js' GLTFLoader decodes them with meshoptimizer's decoder (WebAssembly).
+tiles.registerPlugin(new GLTFExtensionsPlugin({ meshoptDecoder: MeshoptDecoder }));
 // 3D Tiles are Z-up; three.js is Y-up. TilesRenderer already turns glTF (Y-up) content into the
 // tileset's Z-up frame, so rotating the whole group makes the tileset's +Z the scene's +Y.
 tiles.group.rotation.x = -Math.PI / 2;

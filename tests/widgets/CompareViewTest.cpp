@@ -131,7 +131,7 @@ TEST_F(CompareViewTest, TableRowsAreEachSidesBuildAndFrameWithTheLowerHighlighte
         EXPECT_EQ(table->value(CompareTable::NodesRow, side), built.build->tree.nodes.size());
         EXPECT_EQ(table->value(CompareTable::ProxyTrianglesRow, side),
                   built.build->bake.proxyTriangles);
-        EXPECT_EQ(table->value(CompareTable::PackageRow, side), built.hlod.bytes);
+        EXPECT_EQ(table->value(CompareTable::PackageRow, side), built.package.bytesOnDisk);
         EXPECT_EQ(table->value(CompareTable::DrawCallsRow, side),
                   pane->display()->lastFrame().drawCalls);
         EXPECT_EQ(table->value(CompareTable::TrianglesRow, side),
@@ -139,7 +139,7 @@ TEST_F(CompareViewTest, TableRowsAreEachSidesBuildAndFrameWithTheLowerHighlighte
         EXPECT_EQ(table->item(CompareTable::NodesRow, side)->data(Qt::UserRole).toULongLong(),
                   built.build->tree.nodes.size());
     }
-    // The package holds the leaves' meshes plus the proxies: more than the proxies alone.
+    // The package holds the leaves' meshes plus the proxies: more bytes than proxy triangles.
     EXPECT_GT(*table->value(CompareTable::PackageRow, CompareTable::Left),
               *table->value(CompareTable::ProxyTrianglesRow, CompareTable::Left));
     for (int r = 0; r < CompareTable::RowCount; ++r) {

@@ -19,15 +19,14 @@ const QColor kBetterText(20, 80, 20);
 CompareTable::CompareTable(QWidget* parent) : QTableWidget(RowCount, 2, parent) {
     setHorizontalHeaderLabels({tr("Left"), tr("Right")});
     const QStringList rows = {tr("Draw calls (now)"), tr("Triangles (now)"), tr("Tree nodes"),
-                              tr("Proxy triangles"), tr("Package size (geometry, est.)")};
+                              tr("Proxy triangles"), tr("Package on disk")};
     const QStringList tips = {
         tr("Draw calls of the current frame for the linked camera (HLOD preview)"),
         tr("Triangles drawn in the current frame for the linked camera"),
         tr("Nodes of the cluster tree: leaves (one per mesh instance) and clusters"),
         tr("Triangles of all proxies of the inner nodes together"),
-        tr("Geometry of the package's tiles as the exporter stores it (original meshes of the "
-           "leaves and the proxies); tileset.json, hlod.json, GLB headers and textures come on "
-           "top, so the folder is somewhat larger")};
+        tr("Bytes on disk of the package hlod build writes for this side (compressed, the "
+           "allocated blocks of all its files): the figure hlod build prints")};
     for (int r = 0; r < RowCount; ++r) {
         auto* header = new QTableWidgetItem(rows[r]);
         header->setToolTip(tips[r] + QLatin1Char('\n') + tr("Lower is better."));
@@ -58,7 +57,7 @@ void CompareTable::setBuilt(Side side, const BuiltHlod* built) {
     if (built && built->build) {
         v[NodesRow][side] = built->build->tree.nodes.size();
         v[ProxyTrianglesRow][side] = built->build->bake.proxyTriangles;
-        v[PackageRow][side] = built->hlod.bytes;
+        v[PackageRow][side] = built->package.bytesOnDisk;
     } else {
         for (Row row : {DrawCallsRow, TrianglesRow, NodesRow, ProxyTrianglesRow, PackageRow})
             v[row][side].reset();

@@ -5,9 +5,8 @@
 //
 // Rows: the frame's draw calls and triangles (the pane's DisplayController, for the linked
 // camera), the cluster tree's node count, the proxy triangles (BakeResult::proxyTriangles),
-// and the package size. The package size is BakeStats' geometry bytes of the HLOD (the leaves'
-// original meshes plus the proxies, as the GLB writer stores them), without tileset.json,
-// hlod.json, GLB headers and textures: an estimate, and the row says so.
+// and the package's bytes on disk: BuiltHlod::package, the package `hlod build` writes
+// (measured in memory, the same figure the CLI prints).
 // A cell without a value (no build yet, no frame yet) shows "–". The table holds the numbers
 // it shows and nothing else; value() returns them for tests and tools.
 #pragma once

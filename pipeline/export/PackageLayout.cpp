@@ -1,0 +1,321 @@
+// The package layout: tiles, leaf groups, content frames and quantisation (see PackageLayout.h).
+#include "pipeline/export/PackageLayout.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "pipeline/io/GlbMeshopt.h"
+#include "pipeline/proxy/BakeFrame.h"
+#include "pipeline/proxy/ProxyEconomy.h"
+
+namespace hlod {
+
+namespace {
+
+// A flat node (a single plane) still needs a box of non-zero thickness for runtimes'
+// oriented-box math: 1 mm at least.
+constexpr double kMinHalfExtent = 5e-4;
+// A shared mesh is instanced when the copies it saves hold at least this many triangles
+// (about what a glTF mesh, its accessors and node cost in JSON).
+constexpr std::size_t kInstanceTriangles = 256;
+// Position grid: 1/64 of the error budget (see the header).
+constexpr double kStepsPerBudget = 64.0;
+// A leaf's grid: 1/16384 of its diameter, 1/64 of the budget t * D / S at S / t = 256.
+constexpr double kLeafStepsPerDiameter = 16384.0;
+
+Aabb padded(Aabb b, double pad) {
+    if (b.empty()) return b;
+    b.min -= glm::dvec3(pad);
+    b.max += glm::dvec3(pad);
+    return b;
+}
+
+Aabb thick(Aabb b) {
+    if (b.empty()) return b;
+    const glm::dvec3 c = b.center();
+    const glm::dvec3 h = glm::max(b.extent() * 0.5, glm::dvec3(kMinHalfExtent));
+    b.expand(c - h);
+    b.expand(c + h);
+    return b;
+}
+
+double maxAxis(const glm::dvec3& e) { return std::max({e.x, e.y, e.z}); }
+
+// The proxy error made monotone: a parent's error is at least its children's (3D Tiles expects
+// geometric error to decrease toward the leaves). Leaves: 0. A root without a proxy draws
+// nothing itself: its error is the whole model, so a runtime refines it whenever the model
+// covers more than the pixel error.
+std::vector<double> monotoneErrors(const ClusterTree& tree, const BakeResult& bake) {
+    std::vector<double> err(tree.nodes.size(), 0.0);
+    std::vector<Id> order{tree.root}, post;
+    while (!order.empty()) {
+        const Id n = order.back();
+        order.pop_back();
+        post.push_back(n);
+        for (Id c : tree.nodes[n].children)
+            order.push_back(c);
+    }
+    for (auto it = post.rbegin(); it != post.rend(); ++it) {
+        const ClusterNode& node = tree.nodes[*it];
+        if (node.isLeaf()) continue;
+        double e = bake.nodes[*it].errorBudget;
+        for (Id c : node.children)
+            e = std::max(e, err[c]);
+        err[*it] = e;
+    }
+    if (rootHasNoProxy(tree, bake))
+        err[tree.root] = std::max(err[tree.root], tree.nodes[tree.root].box.diagonal());
+    return err;
+}
+
+class Planner {
+public:
+    Planner(const Scene& scene, const ClusterTree& tree, const BakeResult& bake)
+        : scene_(scene), tree_(tree), bake_(bake), err_(monotoneErrors(tree, bake)),
+          triangles_(tree.nodes.size(), 0) {
+        layout_.tileOfNode.assign(tree.nodes.size(), -1);
+        countTriangles(tree.root);
+    }
+
+    PackageLayout run() {
+        if (tree_.nodes[tree_.root].isLeaf())
+            groupTile({tree_.root}, -1, kNoId);
+        else
+            innerTile(tree_.root, -1);
+        for (auto it = layout_.tiles.rbegin(); it != layout_.tiles.rend(); ++it)
+            finishBox(*it);
+        return std::move(layout_);
+    }
+
+private:
+    int addTile(TilePlan t) {
+        layout_.tiles.push_back(std::move(t));
+        const int index = static_cast<int>(layout_.tiles.size()) - 1;
+        const int parent = layout_.tiles.back().parent;
+        if (parent >= 0) layout_.tiles[static_cast<std::size_t>(parent)].children.push_back(index);
+        return index;
+    }
+
+    std::size_t countTriangles(Id n) {
+        const ClusterNode& node = tree_.nodes[n];
+        if (node.isLeaf()) return triangles_[n] = meshOf(n).triangleCount();
+        std::size_t sum = 0;
+        for (Id c : node.children)
+            sum += countTriangles(c);
+        return triangles_[n] = sum;
+    }
+
+    void leavesBelow(Id n, std::vector<Id>& out) const {
+        if (tree_.nodes[n].isLeaf()) {
+            out.push_back(n);
+            return;
+        }
+        for (Id c : tree_.nodes[n].children)
+            leavesBelow(c, out);
+    }
+
+    void innerTile(Id n, int parent) {
+        if (parent >= 0 && triangles_[n] <= kSmallSubtreeTriangles) {
+            // Too small to matter: its leaves in one tile of its parent (see the header).
+            std::vector<Id> leaves;
+            leavesBelow(n, leaves);
+            const int tile = groupTile(std::move(leaves), parent, n);
+            std::vector<Id> stack{n};
+            while (!stack.empty()) {
+                const Id m = stack.back();
+                stack.pop_back();
+                layout_.tileOfNode[m] = tile;
+                for (Id c : tree_.nodes[m].children)
+                    stack.push_back(c);
+            }
+            return;
+        }
+        const NodeBake& b = bake_.nodes[n];
+        const bool hasContent = b.hasProxy && !b.proxy.empty();
+        TilePlan t;
+        t.node = n;
+        t.parent = parent;
+        t.geometricError = err_[n];
+        const glm::dvec3 origin = hasContent ? b.proxy.origin : tree_.nodes[n].box.center();
+        if (parent >= 0) t.frame = glm::translate(glm::dmat4(1.0), origin);
+        if (hasContent) {
+            ContentPlan c;
+            c.proxy = true;
+            c.node = n;
+            c.proxyOffset = parent >= 0 ? glm::dvec3(0.0) : origin;
+            c.positionStep = quantizedBudget(b.errorBudget) / kStepsPerBudget;
+            Aabb box;
+            for (const glm::vec3& p : b.proxy.positions)
+                box.expand(glm::dvec3(p));
+            const double step = positionGridStep(maxAxis(box.extent()), c.positionStep);
+            box.min += c.proxyOffset;
+            box.max += c.proxyOffset;
+            c.bounds = padded(box, step);
+            t.content = addContent(std::move(c));
+        }
+        const int self = addTile(std::move(t));
+        layout_.tileOfNode[n] = self;
+        std::vector<Id> leaves;
+        for (Id c : tree_.nodes[n].children) {
+            if (tree_.nodes[c].isLeaf())
+                leaves.push_back(c);
+            else
+                innerTile(c, self);
+        }
+        if (leaves.empty()) return;
+        std::vector<std::vector<Id>> groups;
+        splitGroup(std::move(leaves), groups);
+        for (std::vector<Id>& g : groups)
+            groupTile(std::move(g), self, n);
+    }
+
+    int addContent(ContentPlan c) {
+        layout_.contents.push_back(std::move(c));
+        return static_cast<int>(layout_.contents.size()) - 1;
+    }
+
+    const Mesh& meshOf(Id leaf) const {
+        return scene_.meshes[scene_.instances[tree_.nodes[leaf].instance].mesh];
+    }
+    const glm::dmat4& worldOf(Id leaf) const {
+        return scene_.instanceTransform(tree_.nodes[leaf].instance);
+    }
+    std::size_t rawBytes(Id leaf) const {
+        const Mesh& m = meshOf(leaf);
+        return m.vertexCount() * 32 + m.indices.size() * 4;
+    }
+    // The grid a leaf asks for: 1/16384 of a diameter D (see the header).
+    static double leafStep(double diameter) { return diameter / kLeafStepsPerDiameter; }
+
+    // Splits a group in space (median of the leaves' centres on the longest axis) until each
+    // part holds at most kMaxGroupBytes of raw geometry. Keeps the leaves' order.
+    void splitGroup(std::vector<Id> leaves, std::vector<std::vector<Id>>& out) const {
+        std::size_t raw = 0;
+        for (Id l : leaves)
+            raw += rawBytes(l);
+        if (raw <= kMaxGroupBytes || leaves.size() < 2) {
+            out.push_back(std::move(leaves));
+            return;
+        }
+        Aabb centres;
+        for (Id l : leaves)
+            centres.expand(tree_.nodes[l].box.center());
+        const glm::dvec3 e = centres.extent();
+        const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+        std::vector<std::pair<double, std::size_t>> keys;
+        for (std::size_t i = 0; i < leaves.size(); ++i)
+            keys.push_back({tree_.nodes[leaves[i]].box.center()[axis], i});
+        std::sort(keys.begin(), keys.end());
+        std::vector<char> low(leaves.size(), 0);
+        for (std::size_t i = 0; i < keys.size() / 2; ++i)
+            low[keys[i].second] = 1;
+        std::vector<Id> a, b;
+        for (std::size_t i = 0; i < leaves.size(); ++i)
+            (low[i] ? a : b).push_back(leaves[i]);
+        splitGroup(std::move(a), out);
+        splitGroup(std::move(b), out);
+    }
+
+    // The exact bounds of a mesh placed by `m` (every vertex transformed).
+    Aabb placedBounds(const Mesh& mesh, const glm::dmat4& m) const {
+        Aabb b;
+        for (const glm::vec3& p : mesh.positions)
+            b.expand(glm::dvec3(m * glm::dvec4(glm::dvec3(p), 1.0)));
+        return b;
+    }
+
+    // Leaves placed in a translated frame: shared meshes instanced, the rest merged.
+    void groupLeaves(const std::vector<Id>& leaves, const glm::dvec3& centre,
+                     ContentPlan& c) const {
+        std::map<Id, std::size_t> uses;
+        double finest = 0.0;
+        for (Id l : leaves) {
+            ++uses[scene_.instances[tree_.nodes[l].instance].mesh];
+            const double s = leafStep(nodeDiameter(tree_.nodes[l]));
+            finest = finest > 0.0 && finest < s ? finest : s;
+        }
+        const double grid = offsetGrid(finest);
+        Aabb mergedBox;
+        double coarsestMerged = 0.0;
+        for (Id l : leaves) {
+            LeafSlot s;
+            s.leaf = l;
+            s.instance = tree_.nodes[l].instance;
+            glm::dmat4 m = worldOf(l);
+            m[3] = glm::dvec4(quantizeOffset(glm::dvec3(m[3]) - centre, grid), 1.0);
+            const Mesh& mesh = meshOf(l);
+            const std::size_t n = uses[scene_.instances[s.instance].mesh];
+            const std::optional<Trs> trs = decomposeTrs(m);
+            s.merged = !(trs && n >= 2 && mesh.triangleCount() * (n - 1) >= kInstanceTriangles);
+            if (s.merged) {
+                s.matrix = m;
+                s.positionStep = leafStep(nodeDiameter(tree_.nodes[l]));
+                coarsestMerged = std::max(coarsestMerged, s.positionStep);
+                mergedBox.expand(placedBounds(mesh, m));
+            } else {
+                s.trs = *trs;
+                const Aabb local = mesh.localBounds();
+                s.positionStep = leafStep(local.diagonal());
+                const double step = positionGridStep(maxAxis(local.extent()), s.positionStep);
+                const glm::dvec3 scale = glm::abs(trs->scale);
+                c.bounds.expand(
+                    padded(placedBounds(mesh, m), step * std::max({scale.x, scale.y, scale.z})));
+            }
+            c.leaves.push_back(s);
+        }
+        // Any merged primitive's grid is at most this (its extent and finest ask are bounded
+        // by all merged leaves' together).
+        const double pad = positionGridStep(maxAxis(mergedBox.extent()), coarsestMerged);
+        c.bounds.expand(padded(mergedBox, pad));
+    }
+
+    int groupTile(std::vector<Id> leaves, int parent, Id parentNode) {
+        ContentPlan c;
+        c.node = parentNode;
+        TilePlan t;
+        t.parent = parent;
+        Aabb box;
+        for (Id l : leaves)
+            box.expand(tree_.nodes[l].box);
+        const glm::dvec3 centre = parent < 0 ? glm::dvec3(0.0) : box.center();
+        t.frame = glm::translate(glm::dmat4(1.0), centre);
+        groupLeaves(leaves, centre, c);
+        t.content = addContent(std::move(c));
+        const int self = addTile(std::move(t));
+        for (Id l : leaves)
+            layout_.tileOfNode[l] = self;
+        return self;
+    }
+
+    // The tile's box in the package frame: its content and its children's boxes (children
+    // come later in `tiles`, so they are finished first when walking backwards).
+    void finishBox(TilePlan& t) const {
+        Aabb box;
+        if (t.content >= 0) {
+            const Aabb local = thick(layout_.contents[static_cast<std::size_t>(t.content)].bounds);
+            box.expand(local.transformed(t.frame));
+        }
+        if (t.node != kNoId) box.expand(tree_.nodes[t.node].box);
+        for (int c : t.children)
+            box.expand(layout_.tiles[static_cast<std::size_t>(c)].worldBox);
+        t.worldBox = thick(box);
+    }
+
+    const Scene& scene_;
+    const ClusterTree& tree_;
+    const BakeResult& bake_;
+    std::vector<double> err_;
+    std::vector<std::size_t> triangles_; // original triangles below each node
+    PackageLayout layout_;
+};
+
+} // namespace
+
+PackageLayout planPackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake) {
+    return Planner(scene, tree, bake).run();
+}
+
+} // namespace hlod

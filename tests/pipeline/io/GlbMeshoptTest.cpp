@@ -1,0 +1,173 @@
+// The compressed GLB (KHR_mesh_quantization + EXT_meshopt_compression) read back through our
+// own importer: positions within half a grid step of what was written, normals, uvs and colours
+// within their encodings' precision, the same triangles and instances; and the importer's
+// errors on broken compressed files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "TestUtil.h"
+#include "pipeline/io/GlbMeshopt.h"
+#include "pipeline/io/GlbWriter.h"
+#include "pipeline/io/GltfMeshopt.h"
+#include "pipeline/io/Import.h"
+
+using namespace hlod;
+
+namespace {
+
+// A 2 x 1 quad on z = 0 whose corners sit off any power-of-two grid, uvs beyond [0, 1].
+struct Quad {
+    std::vector<glm::vec3> positions{
+        {0.013f, 0.0f, 0.0f}, {2.0f, 0.0071f, 0.0f}, {2.0f, 1.0f, 0.00031f}, {0.0f, 1.0f, 0.0f}};
+    std::vector<glm::vec3> normals{4, glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f))};
+    std::vector<glm::vec2> uvs{{0.0f, 0.0f}, {3.25f, 0.0f}, {3.25f, 1.7f}, {0.0f, 1.7f}};
+    std::vector<glm::u8vec4> colors{4, glm::u8vec4(255, 128, 7, 255)};
+    std::vector<std::uint32_t> indices{0, 1, 2, 0, 2, 3};
+    GlbMesh view() const {
+        GlbMesh m;
+        m.name = "quad";
+        m.positions = positions;
+        m.normals = normals;
+        m.uvs = uvs;
+        m.colors = colors;
+        m.indices = indices;
+        m.imageUri = "textures/t.png";
+        m.positionStep = 0.001; // rounds down to 2^-10 m
+        return m;
+    }
+};
+
+// The quad under two nodes: as it is, and turned 90 degrees about y, scaled 3x, far away.
+GlbScene twoQuads(const Quad& q, GlbCompression compression) {
+    GlbScene s;
+    s.compression = compression;
+    s.meshes.push_back(q.view());
+    GlbNode a;
+    a.name = "a";
+    a.mesh = 0;
+    GlbNode b = a;
+    b.name = "b";
+    b.trs.translation = {1000.0, 5.0, -2.0};
+    b.trs.rotation = glm::angleAxis(glm::radians(90.0), glm::dvec3(0, 1, 0));
+    b.trs.scale = glm::dvec3(3.0);
+    s.nodes = {a, b};
+    return s;
+}
+
+Scene roundTrip(const std::vector<std::uint8_t>& bytes, const test::TempDir& dir) {
+    std::ofstream(dir / "q.glb", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return importGltf(dir / "q.glb", ImportOptions{});
+}
+
+glm::dvec3 worldOf(const Scene& s, Id instance, std::size_t v) {
+    const MeshInstance& inst = s.instances[instance];
+    return glm::dvec3(s.nodes[inst.node].world *
+                      glm::dvec4(glm::dvec3(s.meshes[inst.mesh].positions[v]), 1.0));
+}
+
+} // namespace
+
+TEST(GlbMeshopt, GridStepRoundsDownToAPowerOfTwoButSpansTheExtentIn16Bits) {
+    EXPECT_EQ(positionGridStep(10.0, 0.001), 0.0009765625);  // 2^-10 <= 0.001
+    EXPECT_EQ(positionGridStep(100.0, 0.0001), 0.001953125); // 100 / 65535 -> 2^-9
+    EXPECT_EQ(positionGridStep(0.0, 0.0), 1.0);              // one point: any grid
+    const QuantizedPositions q = quantizePositions(Quad{}.positions, 0.001);
+    EXPECT_EQ(q.step, 0.0009765625);
+    EXPECT_EQ(q.max.x, 2048); // x spans 0 .. 2 (the fourth corner), 2 / 2^-10
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            const double back = q.offset[a] + q.step * q.values[i * 4 + a];
+            EXPECT_LE(std::abs(back - Quad{}.positions[i][a]), q.step / 2 + 1e-9);
+        }
+    }
+}
+
+TEST(GlbMeshopt, CompressedSceneDeclaresBothExtensionsRequired) {
+    const Quad q;
+    const std::vector<std::uint8_t> bytes = encodeGlb(twoQuads(q, GlbCompression::Meshopt));
+    const nlohmann::json j = nlohmann::json::parse(splitGlb(bytes, "q.glb").json);
+    EXPECT_EQ(j["extensionsRequired"],
+              nlohmann::json({"EXT_meshopt_compression", "KHR_mesh_quantization"}));
+    EXPECT_EQ(j["meshes"].size(), 1u); // one mesh, referenced by both nodes
+    EXPECT_EQ(j["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"], true);
+    EXPECT_EQ(j["accessors"][0]["componentType"], 5123); // POSITION as unsigned short
+    // The plain encoding requires nothing.
+    const auto plain = encodeGlb(twoQuads(q, GlbCompression::None));
+    EXPECT_FALSE(nlohmann::json::parse(splitGlb(plain, "q.glb").json).contains("extensionsUsed"));
+}
+
+TEST(GlbMeshopt, CompressedSceneReadsBackWithinItsQuantisation) {
+    const Quad q;
+    test::TempDir dir;
+    const Scene plain = roundTrip(encodeGlb(twoQuads(q, GlbCompression::None)), dir);
+    const Scene packed = roundTrip(encodeGlb(twoQuads(q, GlbCompression::Meshopt)), dir);
+    ASSERT_EQ(packed.instances.size(), 2u);
+    ASSERT_EQ(packed.meshes.size(), 1u); // still instanced
+    EXPECT_EQ(packed.meshes[0].indices, q.indices);
+    const double step = 0.0009765625;
+    for (Id inst = 0; inst < 2; ++inst) {
+        const double scale = inst == 0 ? 1.0 : 3.0; // node b scales the grid too
+        for (std::size_t v = 0; v < 4; ++v) {
+            const glm::dvec3 d = worldOf(packed, inst, v) - worldOf(plain, inst, v);
+            for (int a = 0; a < 3; ++a)
+                EXPECT_LE(std::abs(d[a]), scale * step / 2 + 1e-6) << inst << " " << v;
+        }
+    }
+    const Mesh& m = packed.meshes[0];
+    for (std::size_t v = 0; v < 4; ++v) {
+        // 8-bit octahedral normals: within about a degree.
+        EXPECT_GT(glm::dot(glm::normalize(m.normals[v]), q.normals[v]), 0.9997f);
+        EXPECT_NEAR(m.uvs[v].x, q.uvs[v].x, 1e-4); // 16-bit mantissa: 3.25 -> 2^-14
+        EXPECT_NEAR(m.uvs[v].y, q.uvs[v].y, 1e-4);
+        EXPECT_NEAR(m.colors[v].g, 128.0f / 255.0f, 1e-6); // colours are not touched
+    }
+}
+
+TEST(GlbMeshopt, CorruptCompressedDataIsAnErrorNamingTheFile) {
+    const Quad q;
+    std::vector<std::uint8_t> bytes = encodeGlb(twoQuads(q, GlbCompression::Meshopt));
+    GlbChunks c = splitGlb(bytes, "q.glb");
+    for (std::size_t i = 0; i < c.bin.size(); ++i)
+        c.bin[i] = static_cast<std::uint8_t>(0xA5 ^ i); // not a meshopt stream any more
+    test::TempDir dir;
+    const std::string problem = test::problemOf([&] { roundTrip(makeGlb(c.json, c.bin), dir); });
+    EXPECT_NE(problem.find("q.glb"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("meshopt data is corrupt"), std::string::npos) << problem;
+}
+
+TEST(GlbMeshopt, MissingExternalBufferIsNamed) {
+    // A gltfpack-style .gltf whose compressed buffer file is not there.
+    test::TempDir dir;
+    test::writeFile(dir / "scene.gltf", R"({"asset":{"version":"2.0"},
+        "extensionsUsed":["EXT_meshopt_compression"],"extensionsRequired":["EXT_meshopt_compression"],
+        "buffers":[{"uri":"scene.bin","byteLength":8},
+                   {"byteLength":48,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],
+        "bufferViews":[{"buffer":1,"byteLength":48,"byteStride":12,"extensions":{
+            "EXT_meshopt_compression":{"buffer":0,"byteLength":8,"byteStride":12,"count":4,
+                                       "mode":"ATTRIBUTES"}}}]})");
+    const std::string problem =
+        test::problemOf([&] { importGltf(dir / "scene.gltf", ImportOptions{}); });
+    EXPECT_NE(problem.find("buffer 0 'scene.bin' is missing"), std::string::npos) << problem;
+}
+
+TEST(GlbMeshopt, GltfpackStyleSceneWithExternalBufferImports) {
+    // The same compressed scene as .gltf + .bin, as gltfpack writes it: the importer reads the
+    // buffer next to the scene and records it as a file the scene pulled in.
+    const Quad q;
+    const GlbChunks c = splitGlb(encodeGlb(twoQuads(q, GlbCompression::Meshopt)), "q.glb");
+    nlohmann::json j = nlohmann::json::parse(c.json);
+    j["buffers"][0]["uri"] = "q.bin";
+    test::TempDir dir;
+    test::writeFile(dir / "q.gltf", j.dump());
+    test::writeFile(dir / "q.bin", std::string(c.bin.begin(), c.bin.end()));
+    const Scene s = importGltf(dir / "q.gltf", ImportOptions{});
+    EXPECT_EQ(s.instances.size(), 2u);
+    EXPECT_EQ(s.meshes.at(0).indices, q.indices);
+    ASSERT_EQ(s.referencedFiles.size(), 1u);
+    EXPECT_EQ(s.referencedFiles[0].filename(), "q.bin");
+}
