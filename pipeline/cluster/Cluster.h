@@ -16,8 +16,9 @@ struct ClusterParams {
     VolumeType volume = VolumeType::Sphere;
     double k = 1.0;      // AABB proportion constraint exponent (thesis evaluates 0, 1, 2)
     int maxChildren = 8; // cap on children per inner node (>= 2)
-    // Hand-edit constraints: each group is a set of instance ids clustered as one locked unit
-    // (kept whole); excluded instances become their own leaf directly under the root.
+    // Hand-edit constraints: each group is a set of instance ids kept whole as one locked
+    // subtree; excluded instances become their own leaf directly under the root. Both change
+    // the automatic tree only locally (LocalConstraints.h).
     std::vector<std::vector<Id>> lockedGroups;
     std::vector<Id> excluded;
 };
