@@ -70,11 +70,7 @@ void parseSize(const std::string& text, int& w, int& h) {
 #endif
 
 int runBench(const CommandArgs& argv) {
-    std::set<std::string> valueOptions{"--out",     "-o",        "--frames",
-                                       "--size",    "--configs", "--path",
-                                       "--threads", "--shading", "--screen-size"};
-    valueOptions.insert(kImportOptions.begin(), kImportOptions.end());
-    const Args args(argv, valueOptions, {"--no-cache"});
+    const Args args(argv, command("bench"));
 #ifndef HLOD_HAVE_VTK
     throw Error(ErrorCode::InvalidArgument,
                 "this hlod was built without VTK (HLOD_BUILD_GUI=OFF): bench cannot render");
