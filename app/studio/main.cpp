@@ -33,7 +33,7 @@
 
 namespace {
 
-void installTranslators(QApplication& app) {
+void installTranslators(QCoreApplication& app) {
     // Swedish is the one translation we ship; Qt's own strings (dialog buttons) come from the
     // system's Qt translations when installed.
     const QLocale locale;
@@ -41,10 +41,10 @@ void installTranslators(QApplication& app) {
     auto* qt = new QTranslator(&app);
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(qt);
+        QCoreApplication::installTranslator(qt);
     auto* ours = new QTranslator(&app);
     if (ours->load(QStringLiteral(":/translations/hlod-studio_sv.qm")))
-        QApplication::installTranslator(ours);
+        QCoreApplication::installTranslator(ours);
 }
 
 struct Options {
@@ -90,7 +90,7 @@ bool parseStartup(const QCommandLineParser& parser, const QCommandLineOption& bu
 }
 
 // Returns false (after printing why) on bad arguments.
-bool parseOptions(QApplication& app, Options& options) {
+bool parseOptions(QCoreApplication& app, Options& options) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "main", "HLOD Studio: build and inspect Hierarchical Level-of-Detail for 3D scenes."));
@@ -184,9 +184,35 @@ bool parseOptions(QApplication& app, Options& options) {
     return true;
 }
 
+void setApplicationNames() {
+    QCoreApplication::setApplicationName(QStringLiteral("hlod-studio"));
+    QCoreApplication::setOrganizationName(QStringLiteral("hlod"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HLOD_VERSION));
+}
+
+// --help and --version print and exit without a window, so they work without a display (over
+// ssh, and for help2man when the man page is made at build time).
+bool onlyPrints(int argc, char* argv[]) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "--help" || arg == "-h" || arg == "-?" || arg == "--help-all" ||
+            arg == "--version" || arg == "-v")
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
+    if (onlyPrints(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        Q_INIT_RESOURCE(resources); // the translation
+        setApplicationNames();
+        installTranslators(app);
+        Options options;
+        return parseOptions(app, options) ? 0 : 2; // process() exits after printing
+    }
     // Must precede QApplication: every GL context Qt creates later uses this format, and
     // sharing lets the viewport survive being moved between top-level windows.
     QSurfaceFormat::setDefaultFormat(hlod::widgets::viewportSurfaceFormat());
@@ -194,10 +220,8 @@ int main(int argc, char* argv[]) {
 
     QApplication app(argc, argv);
     Q_INIT_RESOURCE(resources); // the icons live in a static library
-    QApplication::setApplicationName(QStringLiteral("hlod-studio"));
+    setApplicationNames();
     QApplication::setApplicationDisplayName(QStringLiteral("HLOD Studio"));
-    QApplication::setOrganizationName(QStringLiteral("hlod"));
-    QApplication::setApplicationVersion(QStringLiteral(HLOD_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/hlod-studio.png")));
     QApplication::setDesktopFileName(QStringLiteral("hlod-studio"));
     installTranslators(app);
