@@ -173,25 +173,38 @@ std::string commandHelp(const CommandSpec& c) {
     return out;
 }
 
-std::string shortUsage() {
-    std::string out = "Usage:\n";
+namespace {
+
+// "Usage: ..." and "  or:  ..." lines (the form help2man turns into the man page's synopsis).
+std::string synopses() {
+    std::vector<std::string> lines;
     for (const CommandSpec& c : commands())
-        for (const std::string& s : c.synopsis)
-            out += "  " + s + "\n";
-    out += "  hlod help [COMMAND]\n  hlod --version\n\n";
-    out += wrap("",
-                "Run 'hlod help COMMAND' (or 'hlod COMMAND --help') for every flag of a "
-                "command, 'hlod --help' for all of them.",
-                0);
+        lines.insert(lines.end(), c.synopsis.begin(), c.synopsis.end());
+    lines.push_back("hlod help [COMMAND]");
+    lines.push_back("hlod --version");
+    std::string out;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        out += (i == 0 ? "Usage: " : "  or:  ") + lines[i] + "\n";
     return out;
 }
 
+} // namespace
+
+std::string shortUsage() {
+    return synopses() + "\n" +
+           wrap("", "Run 'hlod help COMMAND' (or 'hlod COMMAND --help') for every flag of a "
+                    "command, 'hlod --help' for all of them.",
+                0);
+}
+
 std::string fullHelp() {
-    std::string out = "hlod " HLOD_VERSION
-                      ": the HLOD Studio command-line tool. Builds Hierarchical Level-of-Detail "
-                      "for 3D scenes (clusters of meshes with simplified proxies) and writes "
-                      "engine-ready 3D Tiles packages.\n\n";
-    out = wrap("", out, 0) + "\n" + shortUsage() + "\nCommands:\n";
+    std::string out = synopses() + "\n";
+    out += wrap("", "hlod " HLOD_VERSION
+                    ", the HLOD Studio command-line tool, builds Hierarchical Level-of-Detail "
+                    "for 3D scenes (clusters of meshes with simplified proxies) and writes "
+                    "engine-ready 3D Tiles packages. Run 'hlod help COMMAND' for one command.",
+                0);
+    out += "\nCommands:\n";
     for (const CommandSpec& c : commands()) {
         const std::size_t stop = c.summary.find(". ");
         const std::string first =
@@ -201,10 +214,11 @@ std::string fullHelp() {
     out += "\nGeneral options:\n";
     out += optionLine("-h, --help", "Print this help and exit.");
     out += optionLine("--version", "Print the version and exit.");
-    out += "\nExit status: 0 on success; 1 when the work fails (one line on stderr names the "
-           "file and the problem); 2 for a usage error.\n";
+    out += "\n" + wrap("", "Exit status: 0 on success; 1 when the work fails (one line on "
+                           "stderr names the file and the problem); 2 for a usage error.",
+                       0);
     for (const CommandSpec& c : commands())
-        out += "\n" + std::string(kWidth, '-') + "\n" + commandHelp(c);
+        out += "\n" + commandHelp(c);
     return out;
 }
 
