@@ -86,7 +86,15 @@ struct LineBuilder {
 
 } // namespace
 
-glm::vec3 clusterColor(Id node) { return categoryColor(node); }
+glm::vec3 clusterColor(Id label) { return categoryColor(label); }
+
+glm::vec3 clusterColorOf(Id node, const std::vector<int>* labels) {
+    if (labels && node < labels->size() && (*labels)[node] >= 0)
+        return clusterColor(static_cast<Id>((*labels)[node]));
+    return clusterColor(node);
+}
+
+glm::vec3 highlightColor() { return kHighlightColor; }
 
 glm::vec3 depthColor(int depth) {
     // Hues from red through yellow, green and blue to magenta, 8 steps, then repeat.
@@ -110,25 +118,26 @@ ClusterColoring::ClusterColoring(const Scene& scene) {
     poly_ = geometry.finish();
 }
 
-std::vector<Id> ClusterColoring::colorByLevel(const ClusterTree& tree, int level) {
+std::vector<Id> ClusterColoring::colorByLevel(const ClusterTree& tree, int level,
+                                              const std::vector<int>* labels) {
     const std::vector<Id> cut = nodesAtLevel(tree, level);
     const std::vector<int> cluster = clusterOfInstances(tree, cut, ranges_.size());
     for (std::size_t i = 0; i < ranges_.size(); ++i)
         recolor(*poly_, ranges_[i],
-                cluster[i] < 0 ? kUnclusteredColor : clusterColor(cut[cluster[i]]));
+                cluster[i] < 0 ? kUnclusteredColor : clusterColorOf(cut[cluster[i]], labels));
     return cut;
 }
 
 vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std::vector<Id>& nodes,
-                                             BoundsShape shape) {
+                                             BoundsShape shape, const std::vector<int>* labels) {
     LineBuilder lines;
     for (Id n : nodes) {
         if (n >= tree.nodes.size()) continue;
         const ClusterNode& node = tree.nodes[n];
         if (shape == BoundsShape::Spheres && node.sphere.radius > 0.0)
-            lines.sphere(node.sphere, clusterColor(n));
+            lines.sphere(node.sphere, clusterColorOf(n, labels));
         else if (shape == BoundsShape::Boxes && !node.box.empty())
-            lines.box(node.box, clusterColor(n));
+            lines.box(node.box, clusterColorOf(n, labels));
     }
     return lines.finish();
 }

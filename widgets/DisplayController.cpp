@@ -74,6 +74,7 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
         prop->VisibilityOff();
         renderer->AddViewProp(prop);
     }
+    legend_.addTo(renderer);
 
     connect(model_, &StudioModel::viewChanged, this, &DisplayController::refresh);
     connect(model_, &StudioModel::sceneChanged, this, &DisplayController::refresh);
@@ -84,6 +85,7 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     connect(model_, &StudioModel::selectionChanged, this, [this] {
         refreshHighlight();
         if (model_->view().boundsOfSelectionOnly) refreshClusters();
+        updateLegend();
         viewport_->update();
     });
     connect(viewport_, &Viewport::aboutToRender, this, &DisplayController::beforeRender);
@@ -98,6 +100,7 @@ DisplayController::~DisplayController() {
                           static_cast<vtkProp*>(previewActor_), static_cast<vtkProp*>(boundsActor_),
                           static_cast<vtkProp*>(highlightActor_), static_cast<vtkProp*>(overlay_)})
         renderer->RemoveViewProp(prop);
+    legend_.removeFrom(renderer);
 }
 
 vtkSmartPointer<vtkActor> DisplayController::makeActor(bool lit) const {
@@ -138,7 +141,57 @@ void DisplayController::refresh() {
         previewActor_->GetMapper()->SetInputDataObject(vtkNew<vtkPolyData>());
     }
     refreshHighlight();
+    updateLegend();
     viewport_->update();
+}
+
+void DisplayController::updateLegend() {
+    using Entry = ViewportLegend::Entry;
+    std::vector<Entry> entries;
+    const bool built = model_->hasBuild() && model_->scene();
+    const DisplayMode mode = built ? model_->view().mode : DisplayMode::Original;
+    if (mode == DisplayMode::Clusters) {
+        entries.push_back({tr("Level %1: one colour per cluster").arg(model_->view().level),
+                           glm::vec3(1.0f), false});
+        // The largest clusters first; the rest in one line.
+        std::vector<Id> shown = cut_;
+        const auto& triangles = model_->subtreeTriangles();
+        std::stable_sort(shown.begin(), shown.end(), [&](Id a, Id b) {
+            return a < triangles.size() && b < triangles.size() && triangles[a] > triangles[b];
+        });
+        const std::size_t listed = std::min<std::size_t>(shown.size(), 6);
+        const std::vector<int>& labels = model_->clusterLabels();
+        const ClusterTree& tree = model_->built().build->tree;
+        for (std::size_t i = 0; i < listed; ++i) {
+            const Id n = shown[i];
+            const int label = n < labels.size() ? labels[n] : static_cast<int>(n);
+            const QString text = tree.nodes[n].isLeaf() ? tr("Mesh %1").arg(tree.nodes[n].instance)
+                                                        : tr("Cluster %1").arg(label);
+            entries.push_back({text, clusterColorOf(n, &labels)});
+        }
+        if (shown.size() > listed)
+            entries.push_back({shown.size() - listed == 1
+                                   ? tr("1 more cluster")
+                                   : tr("%1 more clusters").arg(shown.size() - listed),
+                               glm::vec3(0.6f), false});
+    } else if (mode == DisplayMode::Hlod && model_->view().tintByDepth) {
+        entries.push_back({tr("Tint: depth in the tree"), glm::vec3(1.0f), false});
+        std::vector<int> depths;
+        for (Id n : drawList_)
+            if (n < model_->depths().size()) depths.push_back(model_->depths()[n]);
+        std::sort(depths.begin(), depths.end());
+        depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
+        for (int d : depths)
+            entries.push_back(
+                {d == 0 ? tr("Depth 0 (root)") : tr("Depth %1").arg(d), depthColor(d)});
+    }
+    if (!entries.empty() && !model_->selection().instances.empty())
+        entries.push_back({tr("Selected"), highlightColor()});
+    legend_.setEntries(std::move(entries), viewport_->devicePixelRatioF());
+}
+
+std::vector<ViewportLegend::Entry> DisplayController::legendEntries() const {
+    return legend_.visible() ? legend_.entries() : std::vector<ViewportLegend::Entry>{};
 }
 
 void DisplayController::refreshClusters() {
@@ -150,7 +203,7 @@ void DisplayController::refreshClusters() {
         clusterActor_->GetMapper()->SetInputDataObject(coloring_->polyData());
     }
     const ClusterTree& tree = built.build->tree;
-    cut_ = coloring_->colorByLevel(tree, model_->view().level);
+    cut_ = coloring_->colorByLevel(tree, model_->view().level, &model_->clusterLabels());
     std::vector<Id> bounded = cut_;
     if (model_->view().boundsOfSelectionOnly) {
         // The selected clusters and the level's clusters inside them.
@@ -166,9 +219,10 @@ void DisplayController::refreshClusters() {
         }
     }
     boundsActor_->GetMapper()->SetInputDataObject(
-        boundsWireframe(tree, bounded, model_->view().bounds));
+        boundsWireframe(tree, bounded, model_->view().bounds, &model_->clusterLabels()));
     boundsActor_->SetVisibility(model_->view().bounds != BoundsShape::None);
     coloring_->polyData()->Modified();
+    updateLegend();
 }
 
 void DisplayController::refreshHighlight() {
@@ -231,10 +285,10 @@ void DisplayController::beforeRender() {
     }
     last_ = stats;
     if (mode == DisplayMode::Clusters)
-        setOverlay(tr("Level %1 of %2: %3 clusters")
+        setOverlay((cut_.size() == 1 ? tr("Level %1 of %2: 1 cluster")
+                                     : tr("Level %1 of %2: %3 clusters").arg(cut_.size()))
                        .arg(model_->view().level)
-                       .arg(model_->maxLevel())
-                       .arg(cut_.size()));
+                       .arg(model_->maxLevel()));
     else
         setOverlay({});
     Q_EMIT frameStats(stats);
@@ -249,6 +303,7 @@ void DisplayController::updatePreview() {
         previewActor_->GetMapper()->SetInputDataObject(
             hlodPreview(*built.scene, *built.build, drawList_, depths));
         previewDirty_ = false;
+        updateLegend();
     }
     last_ = {result.drawCalls, result.triangles, result.nodesVisited};
     setOverlay(tr("Draw calls: %1\nTriangles: %2\nNodes visited: %3")

@@ -11,6 +11,18 @@
 
 namespace hlod::widgets {
 
+BuiltHlod withStatistics(std::shared_ptr<const Scene> scene,
+                         std::shared_ptr<const HlodBuild> build) {
+    BuiltHlod out;
+    out.original = originalStats(*scene);
+    out.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+    out.share = proxyShare(*scene, build->tree, build->bake);
+    out.levels = levelTable(*scene, build->tree, build->bake);
+    out.build = std::move(build);
+    out.scene = std::move(scene);
+    return out;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -92,11 +104,8 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
         const auto start = Clock::now();
         auto build =
             std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress, previous.get()));
-        result.original = originalStats(*scene);
-        result.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+        result = withStatistics(std::move(scene), std::move(build));
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        result.build = std::move(build);
-        result.scene = std::move(scene);
     } catch (const Error& e) {
         wasCancelled = e.code() == ErrorCode::Cancelled;
         error = QString::fromStdString(e.what());
