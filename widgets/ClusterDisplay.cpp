@@ -171,3 +171,30 @@ vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
 }
 
 } // namespace hlod::widgets
+
+namespace hlod::widgets {
+
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+                                              const std::vector<Id>& drawList,
+                                              const std::vector<Id>& instances) {
+    MergedGeometry geometry(kNodeIdArray);
+    const ClusterTree& tree = build.tree;
+    for (Id n : drawList) {
+        if (n >= tree.nodes.size()) continue;
+        const std::vector<Id> below = instancesBelow(tree, n);
+        const bool touched = std::any_of(below.begin(), below.end(), [&](Id i) {
+            return std::binary_search(instances.begin(), instances.end(), i);
+        });
+        if (!touched) continue;
+        const ClusterNode& node = tree.nodes[n];
+        if (node.isLeaf()) {
+            if (node.instance < scene.instances.size())
+                geometry.addInstance(scene, node.instance, n, kHighlightColor);
+        } else if (n < build.bake.nodes.size()) {
+            geometry.addProxy(build.bake.nodes[n].proxy, n, kHighlightColor);
+        }
+    }
+    return geometry.finish();
+}
+
+} // namespace hlod::widgets

@@ -60,6 +60,12 @@ vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& bu
 
 vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
                                                 const std::vector<Id>& instances);
+// The highlight of the HLOD preview: of the drawn nodes (`drawList`), those holding a selected
+// instance (`instances`, sorted), as drawn (the proxy of an inner node, the mesh of a leaf) in
+// the highlight colour. Cell ids: "NodeId".
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+                                              const std::vector<Id>& drawList,
+                                              const std::vector<Id>& instances);
 
 // Colour of tree depth `depth` in the preview's tint (root red, then through the hues).
 glm::vec3 depthColor(int depth);

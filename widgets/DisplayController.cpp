@@ -8,6 +8,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
+#include <vtkMapper.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -53,7 +54,10 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     highlightActor_ = makeActor(true);
     highlightActor_->PickableOff();
     highlightActor_->GetProperty()->SetAmbient(0.45);
-    // Drawn over the same surfaces it highlights: pulled towards the camera in depth.
+    // Drawn over the very surfaces it highlights: pulled towards the camera in depth. The
+    // offsets act only with coincident topology resolved by polygon offset, which VTK leaves
+    // off unless asked (without it the highlight fought the mesh for every pixel).
+    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
     highlightActor_->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2.0, -40.0);
     overlay_ = vtkSmartPointer<vtkTextActor>::New();
     vtkTextProperty* text = overlay_->GetTextProperty();
@@ -232,8 +236,11 @@ void DisplayController::refreshHighlight() {
         highlightActor_->VisibilityOff();
         return;
     }
+    // In the HLOD preview the selection is lit as drawn (a proxy, not the originals behind it).
+    const bool preview = model_->hasBuild() && model_->view().mode == DisplayMode::Hlod;
     highlightActor_->GetMapper()->SetInputDataObject(
-        selectionHighlight(*scene, selection.instances));
+        preview ? previewHighlight(*scene, *model_->built().build, drawList_, selection.instances)
+                : selectionHighlight(*scene, selection.instances));
     highlightActor_->VisibilityOn();
 }
 
@@ -241,12 +248,25 @@ std::vector<Id> DisplayController::highlightedInstances() const {
     std::vector<Id> out;
     if (!highlightActor_->GetVisibility()) return out;
     auto* poly = vtkPolyData::SafeDownCast(highlightActor_->GetMapper()->GetInput());
-    auto* ids = poly ? vtkUnsignedIntArray::SafeDownCast(
-                           poly->GetCellData()->GetArray(SceneActors::kInstanceIdArray))
-                     : nullptr;
-    if (!ids) return out;
-    for (vtkIdType cell = 0; cell < ids->GetNumberOfTuples(); ++cell)
-        out.push_back(ids->GetValue(cell));
+    if (!poly) return out;
+    if (auto* ids = vtkUnsignedIntArray::SafeDownCast(
+            poly->GetCellData()->GetArray(SceneActors::kInstanceIdArray)))
+        for (vtkIdType cell = 0; cell < ids->GetNumberOfTuples(); ++cell)
+            out.push_back(ids->GetValue(cell));
+    // The preview's highlight names drawn nodes: their instances.
+    if (auto* nodes =
+            vtkUnsignedIntArray::SafeDownCast(poly->GetCellData()->GetArray(kNodeIdArray));
+        nodes && model_->hasBuild()) {
+        std::vector<Id> seen;
+        for (vtkIdType cell = 0; cell < nodes->GetNumberOfTuples(); ++cell)
+            seen.push_back(nodes->GetValue(cell));
+        std::sort(seen.begin(), seen.end());
+        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+        for (Id n : seen) {
+            const std::vector<Id> below = instancesBelow(model_->built().build->tree, n);
+            out.insert(out.end(), below.begin(), below.end());
+        }
+    }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -303,6 +323,7 @@ void DisplayController::updatePreview() {
         previewActor_->GetMapper()->SetInputDataObject(
             hlodPreview(*built.scene, *built.build, drawList_, depths));
         previewDirty_ = false;
+        refreshHighlight(); // lit as drawn: follows the draw list
         updateLegend();
     }
     last_ = {result.drawCalls, result.triangles, result.nodesVisited};

@@ -14,6 +14,7 @@
 #include <set>
 
 #include <QAction>
+#include <QImage>
 #include <QItemSelectionModel>
 #include <QMenu>
 #include <QTest>
@@ -27,6 +28,7 @@
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
 #include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
 #include "widgets/doc/ProjectSession.h"
 
 namespace hlod::studio::test {
@@ -188,6 +190,56 @@ TEST_F(EditingWindow, ClustersKeepLabelExpansionAndSelectionAcrossEditUndoAndRed
     std::sort(children.begin(), children.end());
     EXPECT_EQ(window->model()->selection().clusterNodes, children);
     EXPECT_EQ(window->display()->highlightedInstances(), set);
+}
+
+// Of the pixels a selection changes, the share in the highlight's orange (1, 0.62, 0.05 lit
+// or shaded): 1 when the highlight covers its meshes cleanly, far less when the mesh shows
+// through it in stripes (depth fighting).
+double orangeShare(const QImage& before, const QImage& after) {
+    int changed = 0, orange = 0;
+    for (int y = 0; y < after.height(); ++y)
+        for (int x = 0; x < after.width(); ++x) {
+            const QRgb a = before.pixel(x, y), b = after.pixel(x, y);
+            if (std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) +
+                    std::abs(qBlue(a) - qBlue(b)) <
+                40)
+                continue;
+            ++changed;
+            if (qRed(b) > 150 && qGreen(b) > 70 && qGreen(b) < 200 && qBlue(b) < 90) ++orange;
+        }
+    return changed ? double(orange) / changed : 0.0;
+}
+
+TEST_F(EditingWindow, TheSelectionIsLitAsDrawnWithoutFightingTheMesh) {
+    widgets::Viewport* viewport = window->viewport();
+    const QImage plain = viewport->grabFrame();
+    // The cluster around the mesh at the right of the view.
+    window->display()->pickAt(QPoint(viewport->width() * 3 / 4, viewport->height() * 3 / 5));
+    const Id leaf = window->model()->selection().clusterNode;
+    ASSERT_NE(leaf, kNoId);
+    window->model()->selectClusterNode(tree().nodes[leaf].parent);
+    EXPECT_GT(orangeShare(plain, viewport->grabFrame()), 0.97);
+    // The HLOD preview from afar draws proxies: the proxy holding the selection is lit.
+    window->model()->setMode(widgets::DisplayMode::Hlod);
+    viewport->zoom(0.3);
+    window->model()->clearSelection();
+    const QImage far = viewport->grabFrame();
+    window->model()->selectClusterNode(tree().nodes[leaf].parent);
+    EXPECT_GT(orangeShare(far, viewport->grabFrame()), 0.97);
+    const std::vector<Id>& drawn = window->display()->drawList();
+    for (Id n : drawn) { // a drawn proxy is lit exactly when it holds a selected mesh
+        if (!tree().nodes[n].isLeaf()) {
+            std::vector<Id> below = instancesBelow(tree(), n);
+            std::sort(below.begin(), below.end());
+            const auto& lit = window->display()->highlightedInstances();
+            const bool inLit = std::includes(lit.begin(), lit.end(), below.begin(), below.end());
+            const bool holds = std::any_of(below.begin(), below.end(), [&](Id i) {
+                const auto& sel = window->model()->selection().instances;
+                return std::binary_search(sel.begin(), sel.end(), i);
+            });
+            EXPECT_EQ(inLit, holds) << "node " << n;
+        }
+    }
 }
 
 TEST_F(EditingWindow, LockAndUnlockAreEnabledOnlyWhenTheyApply) {
