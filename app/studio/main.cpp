@@ -1,11 +1,11 @@
 // hlod-studio: the HLOD Studio editor. Sets up OpenGL, translations and the command line, probes
 // for an OpenGL 3.2 context before any window exists, then opens the main window.
 //
-//   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
+//   hlod-studio [FILES...|PROJECT.hlodproj] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
 //               [--build] [--mode original|clusters|hlod] [--level N] [--tint-depth]
 //               [--compare LEFT:RIGHT]
 //
-// With no file the embedded sample scene opens. --build runs the HLOD pipeline once the scene
+// With no file the embedded sample scene opens; a .hlodproj opens as a project (issue 20). --build runs the HLOD pipeline once the scene
 // is loaded; --mode picks the display mode (clusters and hlod need a build and imply --build);
 // --level the cluster level shown in Clusters mode; --tint-depth tints the HLOD preview's
 // drawn nodes by their depth in the tree. --compare opens View ▸ Compare Configurations with
@@ -98,8 +98,10 @@ bool parseOptions(QCoreApplication& app, Options& options) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QStringLiteral("files"),
-        QCoreApplication::translate("main", "Scene files or folders, opened as one scene."),
-        QStringLiteral("[FILES...]"));
+        QCoreApplication::translate("main", "Scene files or folders, opened as one scene; or one "
+                                            ".hlodproj project (its scene, parameters and hand "
+                                            "edits, built and shown)."),
+        QStringLiteral("[FILES...|PROJECT.hlodproj]"));
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
         QCoreApplication::translate("main",
