@@ -1361,10 +1361,6 @@ Besökta noder: %3</translation>
         <translation>Geometri så som paketets GLB-filer lagrar den</translation>
     </message>
     <message>
-        <source>HLOD: the original meshes plus all %1 proxies, as the thesis&apos; tables count it: what the package stores, not what is drawn at once. The proxies hold %2 triangles, %3 of the original (the root&apos;s alone %4).</source>
-        <translation>HLOD: originalnäten plus alla %1 proxyer, som avhandlingens tabeller räknar: det paketet lagrar, inte det som ritas samtidigt. Proxyerna har %2 trianglar, %3 av originalet (rotens ensam %4).</translation>
-    </message>
-    <message>
         <source>Proxy economy: 1 cluster dissolved</source>
         <translation>Proxyekonomi: 1 kluster upplöst</translation>
     </message>
@@ -1383,6 +1379,18 @@ Besökta noder: %3</translation>
     <message>
         <source>Level 0: the original meshes</source>
         <translation>Nivå 0: originalnäten</translation>
+    </message>
+    <message>
+        <source>the root&apos;s alone %1</source>
+        <translation>rotens ensam %1</translation>
+    </message>
+    <message>
+        <source>the root has none: it always draws its children</source>
+        <translation>roten har ingen: den ritar alltid sina barn</translation>
+    </message>
+    <message>
+        <source>HLOD: the original meshes plus all %1 proxies, as the thesis&apos; tables count it: what the package stores, not what is drawn at once. The proxies hold %2 triangles, %3 of the original (%4).</source>
+        <translation>HLOD: originalnäten plus alla %1 proxyer, som avhandlingens tabeller räknar: det paketet lagrar, inte det som ritas samtidigt. Proxyerna har %2 trianglar, %3 av originalet (%4).</translation>
     </message>
 </context>
 <context>

@@ -305,10 +305,13 @@ void DisplayController::beforeRender() {
     }
     last_ = stats;
     if (mode == DisplayMode::Clusters)
-        setOverlay((cut_.size() == 1 ? tr("Level %1 of %2: 1 cluster")
-                                     : tr("Level %1 of %2: %3 clusters").arg(cut_.size()))
-                       .arg(model_->view().level)
-                       .arg(model_->maxLevel()));
+        setOverlay(
+            cut_.size() == 1
+                ? tr("Level %1 of %2: 1 cluster").arg(model_->view().level).arg(model_->maxLevel())
+                : tr("Level %1 of %2: %3 clusters")
+                      .arg(model_->view().level)
+                      .arg(model_->maxLevel())
+                      .arg(cut_.size()));
     else
         setOverlay({});
     Q_EMIT frameStats(stats);

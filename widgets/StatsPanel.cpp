@@ -36,7 +36,7 @@ QTableWidget* makeTable(int rows, int columns, QWidget* parent) {
     table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    table->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     // As tall as its rows: the panel scrolls as a whole when the dock is short.
     table->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     return table;
@@ -47,35 +47,36 @@ QString percent(double share) {
     return QLocale().toString(p, 'f', p < 9.95 ? 1 : 0) + QStringLiteral(" %");
 }
 
-// Exactly as tall as the header and the rows (plus a horizontal scroll bar when one shows):
-// the tables never scroll vertically, the panel does.
-void fitHeight(QTableWidget* table) {
+// Exactly as tall and as wide as the header and the rows: the tables never scroll, the panel
+// does (vertically when the dock is short, horizontally when it is narrow).
+void fitSize(QTableWidget* table) {
     table->resizeColumnsToContents();
     table->resizeRowsToContents();
     int h =
         table->horizontalHeader()->isVisible() ? table->horizontalHeader()->sizeHint().height() : 0;
     for (int r = 0; r < table->rowCount(); ++r)
         h += table->rowHeight(r);
-    h += 2 * table->frameWidth();
-    const int needed = table->verticalHeader()->isVisible() ? table->verticalHeader()->width() : 0;
-    int columns = needed;
+    int w = table->verticalHeader()->isVisible() ? table->verticalHeader()->sizeHint().width() : 0;
     for (int c = 0; c < table->columnCount(); ++c)
-        columns += table->columnWidth(c);
-    if (table->horizontalScrollBarPolicy() != Qt::ScrollBarAlwaysOff &&
-        columns + 2 * table->frameWidth() > table->width())
-        h += table->horizontalScrollBar()->sizeHint().height();
-    table->setFixedHeight(h);
+        w += table->columnWidth(c);
+    table->setFixedHeight(h + 2 * table->frameWidth());
+    table->setMinimumWidth(w + 2 * table->frameWidth());
 }
 
-// "3.5–4 cm" (one unit when both ends share it), "9 mm–1.2 cm" otherwise.
+// "0.12–1.1 m": both ends in the unit of the larger (formatLength's), so they compare at a
+// glance and the column stays narrow.
 QString budgetRange(const LevelRow& row) {
-    const QString lo = formatLength(row.budgetMin);
     const QString hi = formatLength(row.budgetMax);
-    if (lo == hi) return hi;
-    const qsizetype loSpace = lo.lastIndexOf(QLatin1Char(' '));
-    const qsizetype hiSpace = hi.lastIndexOf(QLatin1Char(' '));
-    if (lo.mid(loSpace) == hi.mid(hiSpace)) return lo.left(loSpace) + QStringLiteral("–") + hi;
-    return lo + QStringLiteral("–") + hi;
+    if (formatLength(row.budgetMin) == hi) return hi;
+    const qsizetype space = hi.lastIndexOf(QLatin1Char(' '));
+    const QString unit = hi.mid(space + 1);
+    const double scale = unit == QLatin1String("km")   ? 1e-3
+                         : unit == QLatin1String("cm") ? 1e2
+                         : unit == QLatin1String("mm") ? 1e3
+                                                       : 1.0;
+    const double lo = row.budgetMin * scale;
+    const QString low = QLocale().toString(lo, 'f', lo >= 100.0 ? 0 : lo >= 10.0 ? 1 : 2);
+    return low + QStringLiteral("–") + hi;
 }
 
 QLabel* note(QWidget* parent) {
@@ -91,7 +92,6 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     auto* content = new QWidget;
     table_ = makeTable(RowCount, ColumnCount, content);
     table_->setHorizontalHeaderLabels({tr("Triangles"), tr("Vertices"), tr("Meshes"), tr("Size")});
-    table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table_->setVerticalHeaderLabels({tr("Original"), tr("HLOD")});
     table_->verticalHeaderItem(HlodRow)->setToolTip(
         tr("The original meshes plus every proxy: what the package stores (as in the thesis' "
@@ -122,7 +122,7 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     scroll->setWidget(content);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     plot_ = new StatsPlot(this);
     plot_->setMinimumHeight(90);
     auto* layout = new QVBoxLayout(this);
@@ -153,8 +153,8 @@ void StatsPanel::refresh() {
     fill(OriginalRow, scene ? &original : nullptr);
     fill(HlodRow, model_->hasBuild() ? &model_->built().hlod : nullptr);
     refreshLevels();
-    fitHeight(table_);
-    fitHeight(levels_);
+    fitSize(table_);
+    fitSize(levels_);
     plot_->clear();
     if (!model_->hasBuild()) {
         note_->setText(scene ? tr("Build the HLOD (Build ▸ Build HLOD, Ctrl+B) to compare.")
@@ -167,12 +167,15 @@ void StatsPanel::refresh() {
     const BakeResult& bake = b.build->bake;
     const std::size_t proxyTriangles =
         b.hlod.triangles - std::min(b.hlod.triangles, b.original.triangles);
+    const QString root = b.share.rootProxy > 0.0
+                             ? tr("the root's alone %1").arg(percent(b.share.rootProxy))
+                             : tr("the root has none: it always draws its children");
     note_->setText(tr("HLOD: the original meshes plus all %1 proxies, as the thesis' tables "
                       "count it: what the package stores, not what is drawn at once. The "
-                      "proxies hold %2 triangles, %3 of the original (the root's alone %4).")
+                      "proxies hold %2 triangles, %3 of the original (%4).")
                        .arg(b.hlod.meshes - std::min(b.hlod.meshes, b.original.meshes))
                        .arg(locale.toString(static_cast<qulonglong>(proxyTriangles)))
-                       .arg(percent(b.share.allProxies), percent(b.share.rootProxy)));
+                       .arg(percent(b.share.allProxies), root));
     const double ratio = b.build->settings.bake.proxyRatio;
     economy_->setText(
         (bake.dissolved == 1 ? tr("Proxy economy: 1 cluster dissolved")

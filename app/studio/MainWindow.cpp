@@ -105,7 +105,7 @@ MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
     // next to its four number columns, the right column for the parameter editors.
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("SceneDock")),
                  findChild<QDockWidget*>(QStringLiteral("BuildDock"))},
-                {380, 360}, Qt::Horizontal);
+                {380, 400}, Qt::Horizontal);
     resizeDocks({findChild<QDockWidget*>(QStringLiteral("BuildDock")),
                  findChild<QDockWidget*>(QStringLiteral("StatsDock"))},
                 {390, 400}, Qt::Vertical);
