@@ -157,20 +157,28 @@ void DisplayController::updateLegend() {
     if (mode == DisplayMode::Clusters) {
         entries.push_back({tr("Level %1: one colour per cluster").arg(model_->view().level),
                            glm::vec3(1.0f), false});
-        // The largest clusters first; the rest in one line.
+        // Clusters before single meshes, the largest first; the rest in one line.
+        const ClusterTree& tree = model_->built().build->tree;
         std::vector<Id> shown = cut_;
         const auto& triangles = model_->subtreeTriangles();
         std::stable_sort(shown.begin(), shown.end(), [&](Id a, Id b) {
+            const bool leafA = tree.nodes[a].isLeaf(), leafB = tree.nodes[b].isLeaf();
+            if (leafA != leafB) return leafB;
             return a < triangles.size() && b < triangles.size() && triangles[a] > triangles[b];
         });
         const std::size_t listed = std::min<std::size_t>(shown.size(), 6);
         const std::vector<int>& labels = model_->clusterLabels();
-        const ClusterTree& tree = model_->built().build->tree;
+        const Scene& scene = *model_->scene();
         for (std::size_t i = 0; i < listed; ++i) {
             const Id n = shown[i];
-            const int label = n < labels.size() ? labels[n] : static_cast<int>(n);
-            const QString text = tree.nodes[n].isLeaf() ? tr("Mesh %1").arg(tree.nodes[n].instance)
-                                                        : tr("Cluster %1").arg(label);
+            QString text;
+            if (const ClusterNode& node = tree.nodes[n]; node.isLeaf()) {
+                const MeshInstance& instance = scene.instances[node.instance];
+                text = QString::fromStdString(scene.nodes[instance.node].name);
+                if (text.isEmpty()) text = tr("Mesh %1").arg(node.instance);
+            } else {
+                text = tr("Cluster %1").arg(n < labels.size() ? labels[n] : static_cast<int>(n));
+            }
             entries.push_back({text, clusterColorOf(n, &labels)});
         }
         if (shown.size() > listed)

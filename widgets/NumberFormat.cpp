@@ -8,10 +8,7 @@
 
 namespace hlod::widgets {
 
-namespace {
-
-// Three significant digits, no exponent, no trailing zeros: 1.23, 12.3, 123, 1,235.
-QString significant(double x) {
+QString formatSignificant(double x) {
     const QLocale locale;
     if (x >= 999.5) return locale.toString(std::llround(x));
     const int decimals = x >= 99.95 ? 0 : x >= 9.995 ? 1 : 2;
@@ -25,30 +22,28 @@ QString significant(double x) {
     return text;
 }
 
-} // namespace
-
 QString formatCount(std::uint64_t n) {
     const QLocale locale;
     if (n < 100000) return locale.toString(static_cast<qulonglong>(n));
     if (n < 1000000)
-        return QCoreApplication::translate("NumberFormat", "%1 k").arg(significant(n / 1e3));
-    return QCoreApplication::translate("NumberFormat", "%1 M").arg(significant(n / 1e6));
+        return QCoreApplication::translate("NumberFormat", "%1 k").arg(formatSignificant(n / 1e3));
+    return QCoreApplication::translate("NumberFormat", "%1 M").arg(formatSignificant(n / 1e6));
 }
 
 QString formatVolume(double v) {
     if (!(v > 0.0)) return QStringLiteral("0 m³");
-    if (v >= 1.0) return significant(v) + QStringLiteral(" m³");
-    if (v >= 1e-3) return significant(v * 1e3) + QStringLiteral(" L");
-    if (v >= 1e-6) return significant(v * 1e6) + QStringLiteral(" cm³");
-    return significant(v * 1e9) + QStringLiteral(" mm³");
+    if (v >= 1.0) return formatSignificant(v) + QStringLiteral(" m³");
+    if (v >= 1e-3) return formatSignificant(v * 1e3) + QStringLiteral(" L");
+    if (v >= 1e-6) return formatSignificant(v * 1e6) + QStringLiteral(" cm³");
+    return formatSignificant(v * 1e9) + QStringLiteral(" mm³");
 }
 
 QString formatLength(double m) {
     if (!(m > 0.0)) return QStringLiteral("0 m");
-    if (m >= 1000.0) return significant(m / 1000.0) + QStringLiteral(" km");
-    if (m >= 1.0) return significant(m) + QStringLiteral(" m");
-    if (m >= 0.01) return significant(m * 100.0) + QStringLiteral(" cm");
-    return significant(m * 1000.0) + QStringLiteral(" mm");
+    if (m >= 1000.0) return formatSignificant(m / 1000.0) + QStringLiteral(" km");
+    if (m >= 1.0) return formatSignificant(m) + QStringLiteral(" m");
+    if (m >= 0.01) return formatSignificant(m * 100.0) + QStringLiteral(" cm");
+    return formatSignificant(m * 1000.0) + QStringLiteral(" mm");
 }
 
 QString formatMegabytes(std::uint64_t bytes) {

@@ -9,6 +9,8 @@
 
 namespace hlod::widgets {
 
+// Three significant digits, no exponent, no trailing zeros: 1.23, 12.3, 123, 1,235.
+QString formatSignificant(double x);
 // 987 -> "987", 12345 -> "12,345", 123456 -> "123 k", 1234567 -> "1.23 M".
 QString formatCount(std::uint64_t n);
 // Cubic metres, shown in m³, L (litres), cm³ or mm³ with three significant digits:

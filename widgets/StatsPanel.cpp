@@ -74,9 +74,7 @@ QString budgetRange(const LevelRow& row) {
                          : unit == QLatin1String("cm") ? 1e2
                          : unit == QLatin1String("mm") ? 1e3
                                                        : 1.0;
-    const double lo = row.budgetMin * scale;
-    const QString low = QLocale().toString(lo, 'f', lo >= 100.0 ? 0 : lo >= 10.0 ? 1 : 2);
-    return low + QStringLiteral("–") + hi;
+    return formatSignificant(row.budgetMin * scale) + QStringLiteral("–") + hi;
 }
 
 QLabel* note(QWidget* parent) {
