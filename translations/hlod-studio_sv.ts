@@ -1473,5 +1473,9 @@ Besökta noder: %3</translation>
         <source>Scene files or folders, opened as one scene; or one .hlodproj project (its scene, parameters and hand edits, built and shown).</source>
         <translation>Scenfiler eller mappar, som öppnas som en scen; eller ett .hlodproj-projekt (dess scen, parametrar och handredigeringar, byggt och visat).</translation>
     </message>
+    <message>
+        <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset). Run it in a desktop session or under xvfb-run -a, or use the hlod command-line tool (hlod --help).</source>
+        <translation>ingen skärm att öppna ett fönster på (DISPLAY och WAYLAND_DISPLAY är inte satta). Kör den i en skrivbordssession eller under xvfb-run -a, eller använd kommandoradsverktyget hlod (hlod --help).</translation>
+    </message>
 </context>
 </TS>
