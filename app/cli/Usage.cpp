@@ -192,17 +192,19 @@ std::string synopses() {
 
 std::string shortUsage() {
     return synopses() + "\n" +
-           wrap("", "Run 'hlod help COMMAND' (or 'hlod COMMAND --help') for every flag of a "
-                    "command, 'hlod --help' for all of them.",
+           wrap("",
+                "Run 'hlod help COMMAND' (or 'hlod COMMAND --help') for every flag of a "
+                "command, 'hlod --help' for all of them.",
                 0);
 }
 
 std::string fullHelp() {
     std::string out = synopses() + "\n";
-    out += wrap("", "hlod " HLOD_VERSION
-                    ", the HLOD Studio command-line tool, builds Hierarchical Level-of-Detail "
-                    "for 3D scenes (clusters of meshes with simplified proxies) and writes "
-                    "engine-ready 3D Tiles packages. Run 'hlod help COMMAND' for one command.",
+    out += wrap("",
+                "hlod " HLOD_VERSION
+                ", the HLOD Studio command-line tool, builds Hierarchical Level-of-Detail "
+                "for 3D scenes (clusters of meshes with simplified proxies) and writes "
+                "engine-ready 3D Tiles packages. Run 'hlod help COMMAND' for one command.",
                 0);
     out += "\nCommands:\n";
     for (const CommandSpec& c : commands()) {
@@ -214,8 +216,9 @@ std::string fullHelp() {
     out += "\nGeneral options:\n";
     out += optionLine("-h, --help", "Print this help and exit.");
     out += optionLine("--version", "Print the version and exit.");
-    out += "\n" + wrap("", "Exit status: 0 on success; 1 when the work fails (one line on "
-                           "stderr names the file and the problem); 2 for a usage error.",
+    out += "\n" + wrap("",
+                       "Exit status: 0 on success; 1 when the work fails (one line on "
+                       "stderr names the file and the problem); 2 for a usage error.",
                        0);
     for (const CommandSpec& c : commands())
         out += "\n" + commandHelp(c);
