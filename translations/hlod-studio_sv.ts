@@ -78,10 +78,6 @@
         <translation>&amp;Öppna…</translation>
     </message>
     <message>
-        <source>Open one or more scene files (several files form one scene)</source>
-        <translation>Öppna en eller flera scenfiler (flera filer bildar en scen)</translation>
-    </message>
-    <message>
         <source>Open &amp;Folder…</source>
         <translation>Öppna &amp;mapp…</translation>
     </message>
@@ -146,16 +142,8 @@
         <translation>&amp;Töm listan</translation>
     </message>
     <message>
-        <source>Scenes (%1)</source>
-        <translation>Scener (%1)</translation>
-    </message>
-    <message>
         <source>All files (*)</source>
         <translation>Alla filer (*)</translation>
-    </message>
-    <message>
-        <source>Open Scene</source>
-        <translation>Öppna scen</translation>
     </message>
     <message>
         <source>Open Folder as Scene</source>
@@ -453,6 +441,57 @@
         <source>Pipeline</source>
         <translation>Pipeline</translation>
     </message>
+    <message>
+        <source>Open a project, or one or more scene files (several files form one scene)</source>
+        <translation>Öppna ett projekt, eller en eller flera scenfiler (flera filer bildar en scen)</translation>
+    </message>
+    <message>
+        <source>%1 is a project: open it on its own (its scene is in the project), not together with other files</source>
+        <translation>%1 är ett projekt: öppna det ensamt (dess scen finns i projektet), inte tillsammans med andra filer</translation>
+    </message>
+    <message>
+        <source>Scenes and projects (%1)</source>
+        <translation>Scener och projekt (%1)</translation>
+    </message>
+    <message>
+        <source>HLOD projects (%1)</source>
+        <translation>HLOD-projekt (%1)</translation>
+    </message>
+    <message>
+        <source>Open Scene or Project</source>
+        <translation>Öppna scen eller projekt</translation>
+    </message>
+    <message>
+        <source>Could not open the project %1</source>
+        <translation>Kunde inte öppna projektet %1</translation>
+    </message>
+    <message>
+        <source>Its scene could not be read: %1</source>
+        <translation>Dess scen kunde inte läsas: %1</translation>
+    </message>
+    <message>
+        <source>Recovering %1 from its autosave</source>
+        <translation>Återställer %1 från dess automatiska sparning</translation>
+    </message>
+    <message>
+        <source>Opening project %1</source>
+        <translation>Öppnar projektet %1</translation>
+    </message>
+    <message>
+        <source>Opened %1: building its HLOD…</source>
+        <translation>Öppnade %1: bygger dess HLOD…</translation>
+    </message>
+</context>
+<context>
+    <name>NumberFormat</name>
+    <message>
+        <source>%1 k</source>
+        <translation>%1 k</translation>
+    </message>
+    <message>
+        <source>%1 M</source>
+        <translation>%1 M</translation>
+    </message>
 </context>
 <context>
     <name>RecentScenes</name>
@@ -640,18 +679,6 @@
         <translation>Instans %1</translation>
     </message>
     <message>
-        <source>Leaf %1: instance %2</source>
-        <translation>Löv %1: instans %2</translation>
-    </message>
-    <message>
-        <source>Cluster %1: %2 children, fill %3, cost %4</source>
-        <translation>Kluster %1: %2 barn, fyllnad %3, kostnad %4</translation>
-    </message>
-    <message>
-        <source>Volume of the node&apos;s bounding sphere (sphere trees) or box, in m³</source>
-        <translation>Volym för nodens omslutande sfär (sfärträd) eller låda, i m³</translation>
-    </message>
-    <message>
         <source>Cluster</source>
         <translation>Kluster</translation>
     </message>
@@ -664,12 +691,48 @@
         <translation>Nivå</translation>
     </message>
     <message>
-        <source>Volume (m³)</source>
-        <translation>Volym (m³)</translation>
+        <source>Cluster %1 (locked)</source>
+        <translation>Kluster %1 (låst)</translation>
     </message>
     <message>
-        <source>Proxy triangles</source>
-        <translation>Proxytrianglar</translation>
+        <source>%1 triangles below, %2 across, volume %3</source>
+        <translation>%1 trianglar under, %2 tvärsöver, volym %3</translation>
+    </message>
+    <message>
+        <source>%1: mesh instance %2, %3</source>
+        <translation>%1: nätinstans %2, %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 children, %3, proxy %4 triangles, fill %5%6</source>
+        <translation>%1: %2 barn, %3, proxy %4 trianglar, fyllnad %5%6</translation>
+    </message>
+    <message>
+        <source>; locked by a hand edit: kept whole when clustering reruns</source>
+        <translation>; låst av en handredigering: hålls samman när klustringen körs om</translation>
+    </message>
+    <message>
+        <source>Triangles of the original meshes below the cluster</source>
+        <translation>Trianglar i originalnäten under klustret</translation>
+    </message>
+    <message>
+        <source>Triangles of the cluster&apos;s proxy, drawn in place of everything below it</source>
+        <translation>Trianglar i klustrets proxy, som ritas i stället för allt under det</translation>
+    </message>
+    <message>
+        <source>Level in the tree: 0 for single meshes, the root highest</source>
+        <translation>Nivå i trädet: 0 för enskilda nät, roten högst</translation>
+    </message>
+    <message>
+        <source>Diameter of the cluster&apos;s bounding sphere (sphere trees) or diagonal of its box</source>
+        <translation>Diameter för klustrets omslutande sfär (sfärträd) eller diagonal för dess låda</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Storlek</translation>
+    </message>
+    <message>
+        <source>Proxy</source>
+        <translation>Proxy</translation>
     </message>
 </context>
 <context>
@@ -876,6 +939,14 @@
         <source>Right: %1</source>
         <translation>Höger: %1</translation>
     </message>
+    <message>
+        <source>Close</source>
+        <translation>Stäng</translation>
+    </message>
+    <message>
+        <source>Close the comparison (Esc); its builds stop</source>
+        <translation>Stäng jämförelsen (Esc); dess byggen stoppas</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::DisplayController</name>
@@ -890,6 +961,46 @@ Nodes visited: %3</source>
         <translation>Ritanrop: %1
 Trianglar: %2
 Besökta noder: %3</translation>
+    </message>
+    <message>
+        <source>Level %1: one colour per cluster</source>
+        <translation>Nivå %1: en färg per kluster</translation>
+    </message>
+    <message>
+        <source>Mesh %1</source>
+        <translation>Nät %1</translation>
+    </message>
+    <message>
+        <source>Cluster %1</source>
+        <translation>Kluster %1</translation>
+    </message>
+    <message>
+        <source>1 more cluster</source>
+        <translation>1 kluster till</translation>
+    </message>
+    <message>
+        <source>%1 more clusters</source>
+        <translation>%1 kluster till</translation>
+    </message>
+    <message>
+        <source>Tint: depth in the tree</source>
+        <translation>Toning: djup i trädet</translation>
+    </message>
+    <message>
+        <source>Depth 0 (root)</source>
+        <translation>Djup 0 (roten)</translation>
+    </message>
+    <message>
+        <source>Depth %1</source>
+        <translation>Djup %1</translation>
+    </message>
+    <message>
+        <source>Selected</source>
+        <translation>Markerat</translation>
+    </message>
+    <message>
+        <source>Level %1 of %2: 1 cluster</source>
+        <translation>Nivå %1 av %2: 1 kluster</translation>
     </message>
 </context>
 <context>
@@ -1117,6 +1228,14 @@ Besökta noder: %3</translation>
         <source>The pipeline needs a %1 node: add another one before removing this one</source>
         <translation>Pipelinen behöver en %1-nod: lägg till en till innan du tar bort den här</translation>
     </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Exporterat till %1</translation>
+    </message>
+    <message>
+        <source>The package in %1 is older than the HLOD shown: export again (File ▸ Export Package)</source>
+        <translation>Paketet i %1 är äldre än den visade HLOD:en: exportera igen (Arkiv ▸ Exportera paket)</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::ProjectSession</name>
@@ -1174,10 +1293,6 @@ Besökta noder: %3</translation>
         <translation>Nät</translation>
     </message>
     <message>
-        <source>MB</source>
-        <translation>MB</translation>
-    </message>
-    <message>
         <source>Original</source>
         <translation>Original</translation>
     </message>
@@ -1186,12 +1301,96 @@ Besökta noder: %3</translation>
         <translation>HLOD</translation>
     </message>
     <message>
-        <source>%1 nodes, height %2; %3 proxies baked, %4 reused; built in %5 s</source>
-        <translation>%1 noder, höjd %2; %3 proxyer bakade, %4 återanvända; byggd på %5 s</translation>
-    </message>
-    <message>
         <source>Build the HLOD (Build ▸ Build HLOD, Ctrl+B) to compare.</source>
         <translation>Bygg HLOD (Bygg ▸ Bygg HLOD, Ctrl+B) för att jämföra.</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Storlek</translation>
+    </message>
+    <message>
+        <source>The original meshes plus every proxy: what the package stores (as in the thesis&apos; tables), not what is drawn at once</source>
+        <translation>Originalnäten plus alla proxyer: det paketet lagrar (som i avhandlingens tabeller), inte det som ritas samtidigt</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Nivå</translation>
+    </message>
+    <message>
+        <source>Nodes</source>
+        <translation>Noder</translation>
+    </message>
+    <message>
+        <source>Children</source>
+        <translation>Barn</translation>
+    </message>
+    <message>
+        <source>Budget</source>
+        <translation>Budget</translation>
+    </message>
+    <message>
+        <source>Share</source>
+        <translation>Andel</translation>
+    </message>
+    <message>
+        <source>Level in the tree: 0 holds the original meshes</source>
+        <translation>Nivå i trädet: 0 rymmer originalnäten</translation>
+    </message>
+    <message>
+        <source>Clusters (level 0: meshes) on this level</source>
+        <translation>Kluster (nivå 0: nät) på den här nivån</translation>
+    </message>
+    <message>
+        <source>Mean number of children of this level&apos;s clusters</source>
+        <translation>Medelantal barn för den här nivåns kluster</translation>
+    </message>
+    <message>
+        <source>Error budget: how far a proxy of this level may deviate from what it replaces (pixel error × cluster diameter / screen size)</source>
+        <translation>Felbudget: hur långt en proxy på den här nivån får avvika från det den ersätter (pixelfel × klusterdiameter / skärmstorlek)</translation>
+    </message>
+    <message>
+        <source>Triangles of all proxies of this level (level 0: of the original meshes)</source>
+        <translation>Trianglar i alla proxyer på den här nivån (nivå 0: i originalnäten)</translation>
+    </message>
+    <message>
+        <source>Those triangles as a share of the original scene&apos;s</source>
+        <translation>De trianglarna som andel av originalscenens</translation>
+    </message>
+    <message>
+        <source>Geometry as the package&apos;s GLB files store it</source>
+        <translation>Geometri så som paketets GLB-filer lagrar den</translation>
+    </message>
+    <message>
+        <source>Proxy economy: 1 cluster dissolved</source>
+        <translation>Proxyekonomi: 1 kluster upplöst</translation>
+    </message>
+    <message>
+        <source>Proxy economy: %1 clusters dissolved</source>
+        <translation>Proxyekonomi: %1 kluster upplösta</translation>
+    </message>
+    <message>
+        <source>(a proxy must hold at most %1 of the triangles it replaces; a dissolved cluster&apos;s children hang from its parent).</source>
+        <translation>(en proxy får ha högst %1 av trianglarna den ersätter; ett upplöst klusters barn hänger från dess förälder).</translation>
+    </message>
+    <message>
+        <source>%1: %2 nodes, height %3; %4 proxies baked, %5 reused; built in %6 s</source>
+        <translation>%1: %2 noder, höjd %3; %4 proxyer bakade, %5 återanvända; byggd på %6 s</translation>
+    </message>
+    <message>
+        <source>Level 0: the original meshes</source>
+        <translation>Nivå 0: originalnäten</translation>
+    </message>
+    <message>
+        <source>the root&apos;s alone %1</source>
+        <translation>rotens ensam %1</translation>
+    </message>
+    <message>
+        <source>the root has none: it always draws its children</source>
+        <translation>roten har ingen: den ritar alltid sina barn</translation>
+    </message>
+    <message>
+        <source>HLOD: the original meshes plus all %1 proxies, as the thesis&apos; tables count it: what the package stores, not what is drawn at once. The proxies hold %2 triangles, %3 of the original (%4).</source>
+        <translation>HLOD: originalnäten plus alla %1 proxyer, som avhandlingens tabeller räknar: det paketet lagrar, inte det som ritas samtidigt. Proxyerna har %2 trianglar, %3 av originalet (%4).</translation>
     </message>
 </context>
 <context>
@@ -1217,10 +1416,6 @@ Besökta noder: %3</translation>
     <message>
         <source>HLOD Studio: build and inspect Hierarchical Level-of-Detail for 3D scenes.</source>
         <translation>HLOD Studio: bygg och granska hierarkisk detaljnivå (HLOD) för 3D-scener.</translation>
-    </message>
-    <message>
-        <source>Scene files or folders, opened as one scene.</source>
-        <translation>Scenfiler eller mappar, öppnade som en scen.</translation>
     </message>
     <message>
         <source>Save a screenshot once loaded and rendered, then quit.</source>
@@ -1273,6 +1468,14 @@ Besökta noder: %3</translation>
     <message>
         <source>Compare two configurations side by side, e.g. sphere:aabb-k2 (also octree, original, current, @S for the screen size).</source>
         <translation>Jämför två konfigurationer sida vid sida, t.ex. sphere:aabb-k2 (även octree, original, current, @S för skärmstorleken).</translation>
+    </message>
+    <message>
+        <source>Scene files or folders, opened as one scene; or one .hlodproj project (its scene, parameters and hand edits, built and shown).</source>
+        <translation>Scenfiler eller mappar, som öppnas som en scen; eller ett .hlodproj-projekt (dess scen, parametrar och handredigeringar, byggt och visat).</translation>
+    </message>
+    <message>
+        <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset). Run it in a desktop session or under xvfb-run -a, or use the hlod command-line tool (hlod --help).</source>
+        <translation>ingen skärm att öppna ett fönster på (DISPLAY och WAYLAND_DISPLAY är inte satta). Kör den i en skrivbordssession eller under xvfb-run -a, eller använd kommandoradsverktyget hlod (hlod --help).</translation>
     </message>
 </context>
 </TS>

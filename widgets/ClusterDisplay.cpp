@@ -86,7 +86,15 @@ struct LineBuilder {
 
 } // namespace
 
-glm::vec3 clusterColor(Id node) { return categoryColor(node); }
+glm::vec3 clusterColor(Id label) { return categoryColor(label); }
+
+glm::vec3 clusterColorOf(Id node, const std::vector<int>* labels) {
+    if (labels && node < labels->size() && (*labels)[node] >= 0)
+        return clusterColor(static_cast<Id>((*labels)[node]));
+    return clusterColor(node);
+}
+
+glm::vec3 highlightColor() { return kHighlightColor; }
 
 glm::vec3 depthColor(int depth) {
     // Hues from red through yellow, green and blue to magenta, 8 steps, then repeat.
@@ -110,25 +118,26 @@ ClusterColoring::ClusterColoring(const Scene& scene) {
     poly_ = geometry.finish();
 }
 
-std::vector<Id> ClusterColoring::colorByLevel(const ClusterTree& tree, int level) {
+std::vector<Id> ClusterColoring::colorByLevel(const ClusterTree& tree, int level,
+                                              const std::vector<int>* labels) {
     const std::vector<Id> cut = nodesAtLevel(tree, level);
     const std::vector<int> cluster = clusterOfInstances(tree, cut, ranges_.size());
     for (std::size_t i = 0; i < ranges_.size(); ++i)
         recolor(*poly_, ranges_[i],
-                cluster[i] < 0 ? kUnclusteredColor : clusterColor(cut[cluster[i]]));
+                cluster[i] < 0 ? kUnclusteredColor : clusterColorOf(cut[cluster[i]], labels));
     return cut;
 }
 
 vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std::vector<Id>& nodes,
-                                             BoundsShape shape) {
+                                             BoundsShape shape, const std::vector<int>* labels) {
     LineBuilder lines;
     for (Id n : nodes) {
         if (n >= tree.nodes.size()) continue;
         const ClusterNode& node = tree.nodes[n];
         if (shape == BoundsShape::Spheres && node.sphere.radius > 0.0)
-            lines.sphere(node.sphere, clusterColor(n));
+            lines.sphere(node.sphere, clusterColorOf(n, labels));
         else if (shape == BoundsShape::Boxes && !node.box.empty())
-            lines.box(node.box, clusterColor(n));
+            lines.box(node.box, clusterColorOf(n, labels));
     }
     return lines.finish();
 }
@@ -158,6 +167,33 @@ vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
     MergedGeometry geometry(SceneActors::kInstanceIdArray);
     for (Id i : instances)
         if (i < scene.instances.size()) geometry.addInstance(scene, i, i, kHighlightColor);
+    return geometry.finish();
+}
+
+} // namespace hlod::widgets
+
+namespace hlod::widgets {
+
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+                                              const std::vector<Id>& drawList,
+                                              const std::vector<Id>& instances) {
+    MergedGeometry geometry(kNodeIdArray);
+    const ClusterTree& tree = build.tree;
+    for (Id n : drawList) {
+        if (n >= tree.nodes.size()) continue;
+        const std::vector<Id> below = instancesBelow(tree, n);
+        const bool touched = std::any_of(below.begin(), below.end(), [&](Id i) {
+            return std::binary_search(instances.begin(), instances.end(), i);
+        });
+        if (!touched) continue;
+        const ClusterNode& node = tree.nodes[n];
+        if (node.isLeaf()) {
+            if (node.instance < scene.instances.size())
+                geometry.addInstance(scene, node.instance, n, kHighlightColor);
+        } else if (n < build.bake.nodes.size()) {
+            geometry.addProxy(build.bake.nodes[n].proxy, n, kHighlightColor);
+        }
+    }
     return geometry.finish();
 }
 

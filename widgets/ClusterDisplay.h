@@ -8,8 +8,10 @@
 // - hlodPreview: what an engine draws for a draw list: the proxy of every drawn inner node and
 //   the original mesh of every drawn leaf, optionally tinted by tree depth.
 // - selectionHighlight: the selected instances in one flat highlight colour.
-// Colours of a cluster come from categoryColor(node id): a node keeps its colour on every level
-// it appears on. Cell ids: "InstanceId" (colouring, highlight) or "NodeId" (preview).
+// Colours of a cluster come from categoryColor(label): a node keeps its colour on every level
+// it appears on, and across rebuilds while its meshes are the same (the labels of
+// StudioModel::clusterLabels(); node ids when none are given). Cell ids: "InstanceId" (colouring,
+// highlight) or "NodeId" (preview).
 #pragma once
 
 #include <memory>
@@ -31,7 +33,8 @@ public:
     explicit ClusterColoring(const Scene& scene);
     // Colours every instance by its cluster at `level`; instances in no leaf turn grey.
     // Returns the cut (the clusters shown).
-    std::vector<Id> colorByLevel(const ClusterTree& tree, int level);
+    std::vector<Id> colorByLevel(const ClusterTree& tree, int level,
+                                 const std::vector<int>* labels = nullptr);
     vtkPolyData* polyData() const { return poly_; }
 
 private:
@@ -39,10 +42,16 @@ private:
     std::vector<VertexRange> ranges_; // per instance
 };
 
-glm::vec3 clusterColor(Id node);
+glm::vec3 clusterColor(Id label);
+// The colour of `node`: by its label when `labels` has one.
+glm::vec3 clusterColorOf(Id node, const std::vector<int>* labels);
 
 vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std::vector<Id>& nodes,
-                                             BoundsShape shape);
+                                             BoundsShape shape,
+                                             const std::vector<int>* labels = nullptr);
+
+// The flat colour of the selection highlight.
+glm::vec3 highlightColor();
 
 // `depths` non-null: tint each drawn node by its depth (StudioModel::depths()).
 vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
@@ -51,6 +60,12 @@ vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& bu
 
 vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
                                                 const std::vector<Id>& instances);
+// The highlight of the HLOD preview: of the drawn nodes (`drawList`), those holding a selected
+// instance (`instances`, sorted), as drawn (the proxy of an inner node, the mesh of a leaf) in
+// the highlight colour. Cell ids: "NodeId".
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+                                              const std::vector<Id>& drawList,
+                                              const std::vector<Id>& instances);
 
 // Colour of tree depth `depth` in the preview's tint (root red, then through the hues).
 glm::vec3 depthColor(int depth);

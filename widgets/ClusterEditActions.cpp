@@ -9,6 +9,7 @@
 #include <QTreeView>
 
 #include "pipeline/doc/Commands.h"
+#include "pipeline/view/TreeViews.h"
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
 #include "widgets/StudioModel.h"
@@ -20,10 +21,15 @@ namespace hlod::widgets {
 
 namespace {
 
-QAction* makeAction(const QString& text, const QString& tip, QObject* parent) {
+QAction* makeAction(const QString& text, const QString& tip, const QKeySequence& keys,
+                    QObject* parent) {
     auto* action = new QAction(text, parent);
     action->setStatusTip(tip);
     action->setToolTip(tip);
+    action->setShortcut(keys);
+    // Window-wide (the Clusters tab, the viewport, any dock) and shown in context menus too.
+    action->setShortcutContext(Qt::WindowShortcut);
+    action->setShortcutVisibleInContextMenu(true);
     return action;
 }
 
@@ -32,23 +38,28 @@ QAction* makeAction(const QString& text, const QString& tip, QObject* parent) {
 ClusterEditActions::ClusterEditActions(ProjectSession* session, StudioModel* model, QTreeView* tree,
                                        ClusterTreeModel* treeModel, QObject* parent)
     : QObject(parent), session_(session), model_(model), tree_(tree), treeModel_(treeModel) {
+    using K = QKeySequence;
     merge_ = makeAction(tr("&Merge Clusters"),
-                        tr("Make the selected clusters one locked cluster, then rebuild"), this);
+                        tr("Make the selected clusters one locked cluster, then rebuild"),
+                        K(Qt::CTRL | Qt::Key_G), this);
     split_ = makeAction(tr("&Split Cluster"),
-                        tr("Remove the selected cluster: its children hang from its parent"), this);
+                        tr("Remove the selected cluster: its children hang from its parent"),
+                        K(Qt::CTRL | Qt::SHIFT | Qt::Key_G), this);
     lock_ = makeAction(tr("&Lock Cluster"),
-                       tr("Keep the selected clusters whole when clustering reruns"), this);
-    unlock_ = makeAction(tr("&Unlock Cluster"),
-                         tr("Let clustering regroup the selected locked clusters"), this);
-    exclude_ =
-        makeAction(tr("&Exclude from HLOD"),
-                   tr("Hang the selected meshes directly from the root, never merged"), this);
-    include_ =
-        makeAction(tr("&Include in HLOD"), tr("Cluster the selected excluded meshes again"), this);
+                       tr("Keep the selected clusters whole when clustering reruns"),
+                       K(Qt::CTRL | Qt::Key_L), this);
+    unlock_ =
+        makeAction(tr("&Unlock Cluster"), tr("Let clustering regroup the selected locked clusters"),
+                   K(Qt::CTRL | Qt::SHIFT | Qt::Key_L), this);
+    exclude_ = makeAction(tr("&Exclude from HLOD"),
+                          tr("Hang the selected meshes directly from the root, never merged"),
+                          K(Qt::CTRL | Qt::SHIFT | Qt::Key_X), this);
+    include_ = makeAction(tr("&Include in HLOD"), tr("Cluster the selected excluded meshes again"),
+                          K(Qt::CTRL | Qt::SHIFT | Qt::Key_I), this);
     move_ = makeAction(tr("Mo&ve to Cluster"),
                        tr("Move the other selected meshes and clusters into the current cluster "
                           "(the row clicked last)"),
-                       this);
+                       K(Qt::CTRL | Qt::Key_M), this);
     connect(move_, &QAction::triggered, this, &ClusterEditActions::moveToCurrent);
     connect(merge_, &QAction::triggered, this, &ClusterEditActions::merge);
     connect(split_, &QAction::triggered, this, &ClusterEditActions::split);
@@ -66,6 +77,18 @@ ClusterEditActions::ClusterEditActions(ProjectSession* session, StudioModel* mod
     tree_->setDefaultDropAction(Qt::MoveAction);
     connect(tree_, &QWidget::customContextMenuRequested, this, &ClusterEditActions::showTreeMenu);
     connect(treeModel_, &ClusterTreeModel::moveRequested, this, &ClusterEditActions::moveTo);
+    // The actions are enabled exactly when they apply, at every moment (their shortcuts too).
+    for (auto signal :
+         {&StudioModel::selectionChanged, &StudioModel::buildStarted, &StudioModel::buildFinished,
+          &StudioModel::buildCancelled, &StudioModel::sceneChanged})
+        connect(model_, signal, this, &ClusterEditActions::updateActions);
+    connect(model_, &StudioModel::buildFailed, this, &ClusterEditActions::updateActions);
+    connect(session_, &ProjectSession::documentChanged, this, &ClusterEditActions::updateActions);
+    connect(tree_->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &ClusterEditActions::updateActions);
+    connect(tree_->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &ClusterEditActions::updateActions);
+    connect(treeModel_, &QAbstractItemModel::modelReset, this, &ClusterEditActions::updateActions);
     updateActions();
 }
 
@@ -116,20 +139,40 @@ InstanceSet ClusterEditActions::excludedInSelection() const {
 
 void ClusterEditActions::updateActions() {
     const std::vector<Id> nodes = selectedNodes();
-    const std::size_t n = nodes.size();
-    const bool idle = !model_->building() && session_->document().clusterNode() != kNoNode;
-    bool splittable = false;
-    if (model_->hasBuild()) {
+    const bool idle =
+        model_->hasBuild() && !model_->building() && session_->document().clusterNode() != kNoNode;
+    bool clusters = false;    // an inner node other than the root (split, lock)
+    bool unlocked = false;    // one of those not locked yet
+    bool lockedGroup = false; // a selected cluster that is a locked group of the hand edits
+    bool root = false;
+    bool nested = false; // one selected row inside another
+    if (idle) {
         const ClusterTree& tree = model_->built().build->tree;
-        for (Id node : nodes)
-            splittable = splittable || (node != tree.root && !tree.nodes[node].isLeaf());
+        const Document& doc = session_->document();
+        const std::vector<InstanceSet>& locked = doc.graph().node(doc.clusterNode()).edits.locked;
+        for (Id node : nodes) {
+            const ClusterNode& n = tree.nodes[node];
+            root = root || node == tree.root;
+            const bool inner = !n.isLeaf() && node != tree.root;
+            clusters = clusters || inner;
+            unlocked = unlocked || (inner && !n.locked);
+            lockedGroup =
+                lockedGroup ||
+                (n.locked && std::binary_search(locked.begin(), locked.end(), leafSet(tree, node)));
+            for (Id other : nodes)
+                nested = nested || (other != node && isInSubtree(tree, node, other));
+        }
     }
-    merge_->setEnabled(idle && n >= 2);
-    split_->setEnabled(idle && splittable);
-    lock_->setEnabled(idle && n >= 1);
-    unlock_->setEnabled(idle && n >= 1);
-    exclude_->setEnabled(idle && n >= 1);
-    include_->setEnabled(idle && !excludedInSelection().empty());
+    const InstanceSet excluded = idle ? excludedInSelection() : InstanceSet{};
+    std::size_t instances = 0;
+    for (const InstanceSet& set : idle ? selectedClusters() : std::vector<InstanceSet>{})
+        instances += set.size();
+    merge_->setEnabled(idle && nodes.size() >= 2 && !root && !nested);
+    split_->setEnabled(idle && clusters);
+    lock_->setEnabled(idle && unlocked);
+    unlock_->setEnabled(idle && lockedGroup);
+    exclude_->setEnabled(idle && !root && instances > excluded.size());
+    include_->setEnabled(idle && !excluded.empty());
     std::vector<InstanceSet> items;
     InstanceSet target;
     move_->setEnabled(idle && moveToCurrentSets(items, target));
@@ -240,18 +283,28 @@ bool ClusterEditActions::split() {
 
 bool ClusterEditActions::lock() {
     const NodeId node = session_->document().clusterNode();
-    if (node == kNoNode) return false;
+    if (node == kNoNode || !model_->hasBuild()) return false;
+    const ClusterTree& tree = model_->built().build->tree;
     bool any = false;
-    for (const InstanceSet& set : selectedClusters())
-        any = session_->undo()->execute(std::make_unique<LockCluster>(node, set)) || any;
+    for (Id cluster : selectedNodes()) {
+        const ClusterNode& n = tree.nodes[cluster];
+        if (n.isLeaf() || cluster == tree.root || n.locked) continue; // nothing to lock there
+        any = session_->undo()->execute(
+                  std::make_unique<LockCluster>(node, leafSet(tree, cluster))) ||
+              any;
+    }
     return any;
 }
 
 bool ClusterEditActions::unlock() {
     const NodeId node = session_->document().clusterNode();
     if (node == kNoNode) return false;
-    bool any = false;
+    const std::vector<InstanceSet>& locked = session_->document().graph().node(node).edits.locked;
+    std::vector<InstanceSet> toUnlock;
     for (const InstanceSet& set : selectedClusters())
+        if (std::binary_search(locked.begin(), locked.end(), set)) toUnlock.push_back(set);
+    bool any = false;
+    for (const InstanceSet& set : toUnlock)
         any = session_->undo()->execute(std::make_unique<UnlockCluster>(node, set)) || any;
     return any;
 }

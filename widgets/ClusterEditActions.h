@@ -11,6 +11,14 @@
 // and redo included) is AutoRebuild's. Clusters are named by their leaf sets in the current build
 // (HandEdits.h), so the actions need a build; without one (or while one runs) they are disabled.
 //
+// Enabled only when they apply (issue 20 #7), kept current on every selection, build and
+// document change so their shortcuts (issue 20 #9, window-wide, shown in the menus and the
+// context menu) act only then: Merge (Ctrl+G) two or more clusters, neither the root nor one
+// inside another; Split (Ctrl+Shift+G) a cluster below the root; Lock (Ctrl+L) a cluster below
+// the root that is not locked; Unlock (Ctrl+Shift+L) a cluster that is a locked group; Exclude
+// (Ctrl+Shift+X) meshes not yet excluded (not the root); Include (Ctrl+Shift+I) excluded meshes;
+// Move to Cluster (Ctrl+M) when a drop would be accepted. None without a build or during one.
+//
 // Selection: the tree's selected rows are the clusters the actions act on; the tree allows
 // extended selection (Ctrl/Shift-click; SelectionSync keeps the extra rows). In the viewport
 // (attachViewport), Ctrl+click adds the cluster under the cursor to those rows (or removes it

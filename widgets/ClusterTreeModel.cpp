@@ -10,20 +10,29 @@
 #include <QMimeData>
 
 #include "pipeline/view/TreeViews.h"
+#include "widgets/NumberFormat.h"
 
 namespace hlod::widgets {
 
 ClusterTreeModel::ClusterTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
 
 void ClusterTreeModel::setBuild(std::shared_ptr<const Scene> scene,
-                                std::shared_ptr<const HlodBuild> build) {
+                                std::shared_ptr<const HlodBuild> build, std::vector<int> labels) {
     beginResetModel();
     scene_ = build ? std::move(scene) : nullptr;
     build_ = scene_ ? std::move(build) : nullptr;
     triangles_.clear();
     rowInParent_.clear();
+    labels_.clear();
+    keys_.clear();
+    nodeOfKey_.clear();
     if (build_) {
         const ClusterTree& tree = build_->tree;
+        if (labels.size() == tree.nodes.size()) labels_ = std::move(labels);
+        keys_ = clusterKeys(tree);
+        nodeOfKey_.reserve(keys_.size());
+        for (Id n = 0; n < keys_.size(); ++n)
+            nodeOfKey_.emplace(keys_[n], n);
         triangles_ = subtreeTriangles(tree, *scene_);
         rowInParent_.assign(tree.nodes.size(), 0);
         for (const ClusterNode& node : tree.nodes)
@@ -41,6 +50,16 @@ QModelIndex ClusterTreeModel::indexOfNode(Id node) const {
     if (!build_ || node >= build_->tree.nodes.size()) return {};
     const int row = node == build_->tree.root ? 0 : rowInParent_[node];
     return createIndex(row, 0, static_cast<quintptr>(node));
+}
+
+ClusterKey ClusterTreeModel::keyOf(const QModelIndex& index) const {
+    const Id node = nodeOf(index);
+    return node < keys_.size() ? keys_[node] : 0;
+}
+
+QModelIndex ClusterTreeModel::indexOfKey(ClusterKey key) const {
+    const auto it = nodeOfKey_.find(key);
+    return it == nodeOfKey_.end() ? QModelIndex() : indexOfNode(it->second);
 }
 
 InstanceSet ClusterTreeModel::leafSetOf(Id node) const {
@@ -164,7 +183,9 @@ int ClusterTreeModel::columnCount(const QModelIndex&) const { return ColumnCount
 QString ClusterTreeModel::name(Id node) const {
     if (!build_ || node >= build_->tree.nodes.size()) return {};
     const ClusterNode& n = build_->tree.nodes[node];
-    if (!n.isLeaf() || n.instance >= scene_->instances.size()) return tr("Cluster %1").arg(node);
+    const int number = node < labels_.size() ? labels_[node] : static_cast<int>(node);
+    if (!n.isLeaf() || n.instance >= scene_->instances.size())
+        return n.locked ? tr("Cluster %1 (locked)").arg(number) : tr("Cluster %1").arg(number);
     const MeshInstance& instance = scene_->instances[n.instance];
     QString label = QString::fromStdString(scene_->nodes[instance.node].name);
     if (label.isEmpty()) label = QString::fromStdString(scene_->meshes[instance.mesh].name);
@@ -181,6 +202,13 @@ double ClusterTreeModel::volume(Id node) const {
     return e.x * e.y * e.z;
 }
 
+double ClusterTreeModel::size(Id node) const {
+    if (!build_ || node >= build_->tree.nodes.size()) return 0.0;
+    const ClusterNode& n = build_->tree.nodes[node];
+    if (build_->tree.volume == VolumeType::Sphere) return 2.0 * n.sphere.radius;
+    return n.box.empty() ? 0.0 : n.box.diagonal();
+}
+
 QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !build_) return {};
     const Id node = nodeOf(index);
@@ -192,13 +220,21 @@ QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::TextAlignmentRole)
         return index.column() == NameColumn ? QVariant()
                                             : QVariant(Qt::AlignRight | Qt::AlignVCenter);
-    if (role == Qt::ToolTipRole)
-        return n.isLeaf() ? tr("Leaf %1: instance %2").arg(node).arg(n.instance)
-                          : tr("Cluster %1: %2 children, fill %3, cost %4")
-                                .arg(node)
-                                .arg(n.children.size())
-                                .arg(locale.toString(n.fill, 'f', 3))
-                                .arg(locale.toString(n.cost, 'g', 4));
+    if (role == Qt::ToolTipRole) {
+        const QString counts = tr("%1 triangles below, %2 across, volume %3")
+                                   .arg(locale.toString(static_cast<qulonglong>(triangles_[node])),
+                                        formatLength(size(node)), formatVolume(volume(node)));
+        if (n.isLeaf())
+            return tr("%1: mesh instance %2, %3").arg(name(node)).arg(n.instance).arg(counts);
+        return tr("%1: %2 children, %3, proxy %4 triangles, fill %5%6")
+            .arg(name(node))
+            .arg(n.children.size())
+            .arg(counts)
+            .arg(locale.toString(static_cast<qulonglong>(proxy)))
+            .arg(locale.toString(n.fill, 'f', 3))
+            .arg(n.locked ? tr("; locked by a hand edit: kept whole when clustering reruns")
+                          : QString());
+    }
     if (role != Qt::DisplayRole && role != ValueRole) return {};
     const bool raw = role == ValueRole;
     switch (index.column()) {
@@ -206,15 +242,15 @@ QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
         return name(node);
     case TrianglesColumn:
         return raw ? QVariant::fromValue(static_cast<qulonglong>(triangles_[node]))
-                   : QVariant(locale.toString(static_cast<qulonglong>(triangles_[node])));
+                   : QVariant(formatCount(triangles_[node]));
     case LevelColumn:
         return n.level;
-    case VolumeColumn:
-        return raw ? QVariant(volume(node)) : QVariant(locale.toString(volume(node), 'g', 4));
+    case SizeColumn:
+        return raw ? QVariant(size(node)) : QVariant(formatLength(size(node)));
     case ProxyTrianglesColumn:
         if (n.isLeaf()) return raw ? QVariant(qulonglong{0}) : QVariant(QStringLiteral("–"));
         return raw ? QVariant::fromValue(static_cast<qulonglong>(proxy))
-                   : QVariant(locale.toString(static_cast<qulonglong>(proxy)));
+                   : QVariant(formatCount(proxy));
     default:
         return {};
     }
@@ -222,8 +258,21 @@ QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
 
 QVariant ClusterTreeModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal) return {};
-    if (role == Qt::ToolTipRole && section == VolumeColumn)
-        return tr("Volume of the node's bounding sphere (sphere trees) or box, in m³");
+    if (role == Qt::ToolTipRole) {
+        switch (section) {
+        case TrianglesColumn:
+            return tr("Triangles of the original meshes below the cluster");
+        case ProxyTrianglesColumn:
+            return tr("Triangles of the cluster's proxy, drawn in place of everything below it");
+        case LevelColumn:
+            return tr("Level in the tree: 0 for single meshes, the root highest");
+        case SizeColumn:
+            return tr("Diameter of the cluster's bounding sphere (sphere trees) or diagonal of "
+                      "its box");
+        default:
+            return {};
+        }
+    }
     if (role != Qt::DisplayRole) return {};
     switch (section) {
     case NameColumn:
@@ -232,10 +281,10 @@ QVariant ClusterTreeModel::headerData(int section, Qt::Orientation orientation, 
         return tr("Triangles");
     case LevelColumn:
         return tr("Level");
-    case VolumeColumn:
-        return tr("Volume (m³)");
+    case SizeColumn:
+        return tr("Size");
     case ProxyTrianglesColumn:
-        return tr("Proxy triangles");
+        return tr("Proxy");
     default:
         return {};
     }

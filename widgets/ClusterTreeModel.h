@@ -1,10 +1,14 @@
 // Item model over the cluster tree of an HLOD build, for the "Clusters" tab of the scene dock.
 //
 // One row per cluster node (the root is the single top-level row), children in tree order.
-// Columns: name (inner nodes "Cluster N", leaves the name of the scene node holding the
-// instance), original triangles of the subtree (instanced), level (0 = leaf), bounding volume
-// in cubic metres (of the tree's volume type: the sphere for sphere trees, the box otherwise)
-// and proxy triangles (inner nodes; leaves draw their original mesh and show none).
+// Columns, what matters first (issue 20 #5): name (inner nodes "Cluster N" with N the cluster's
+// label, stable across rebuilds (ClusterIdentity.h), locked ones marked; leaves the name of the
+// scene node holding the instance), original triangles of the subtree (instanced), proxy
+// triangles (inner nodes; leaves draw their original mesh and show none), level (0 = leaf) and
+// the size: the diameter of the bounding volume of the tree's volume type (the sphere for
+// sphere trees, the box's diagonal otherwise), a length with its unit; the tooltip also gives
+// that volume. Numbers are formatted for reading (NumberFormat.h), never in scientific
+// notation; ValueRole gives the raw number (metres for the size).
 // The model shows a build it is given (shared, immutable); it owns no pipeline state.
 //
 // Drag and drop (the "move" hand edit of issue #7): rows below the root can be dragged (meshes
@@ -17,6 +21,7 @@
 #pragma once
 
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <QAbstractItemModel>
@@ -24,6 +29,7 @@
 #include "pipeline/doc/HlodBuild.h"
 #include "pipeline/graph/HandEdits.h"
 #include "pipeline/scene/Scene.h"
+#include "widgets/ClusterIdentity.h"
 
 namespace hlod::widgets {
 
@@ -33,9 +39,9 @@ public:
     enum Column {
         NameColumn = 0,
         TrianglesColumn,
-        LevelColumn,
-        VolumeColumn,
         ProxyTrianglesColumn,
+        LevelColumn,
+        SizeColumn,
         ColumnCount
     };
     // Custom roles: the cluster node id (hlod::Id) of an index; the raw number of a column.
@@ -44,8 +50,10 @@ public:
 
     explicit ClusterTreeModel(QObject* parent = nullptr);
 
-    // Shows `build` of `scene`; null clears the model.
-    void setBuild(std::shared_ptr<const Scene> scene, std::shared_ptr<const HlodBuild> build);
+    // Shows `build` of `scene`; null clears the model. `labels` (StudioModel::clusterLabels):
+    // the number each cluster is called by; empty: its node id.
+    void setBuild(std::shared_ptr<const Scene> scene, std::shared_ptr<const HlodBuild> build,
+                  std::vector<int> labels = {});
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;
@@ -57,6 +65,10 @@ public:
 
     QModelIndex indexOfNode(Id node) const;
     Id nodeOf(const QModelIndex& index) const;
+    // The identity of a row's cluster (ClusterIdentity.h) and the row of an identity (invalid
+    // when the shown tree has no such cluster): what keeps rows expanded across rebuilds.
+    ClusterKey keyOf(const QModelIndex& index) const;
+    QModelIndex indexOfKey(ClusterKey key) const;
     // The leaf set (sorted instance ids) below a node of the shown tree; empty when unknown.
     InstanceSet leafSetOf(Id node) const;
     // Whether moving `items` into `target` (leaf sets of the shown tree) is a drop this model
@@ -76,7 +88,8 @@ public:
 
     // Values shown for a node (also used by tests).
     QString name(Id node) const;
-    double volume(Id node) const;
+    double volume(Id node) const; // m³
+    double size(Id node) const;   // m
 
 Q_SIGNALS:
     // A drop asked to move `items` (leaf sets) into the cluster `target` (a leaf set).
@@ -92,6 +105,9 @@ private:
     std::shared_ptr<const HlodBuild> build_;
     std::vector<std::uint64_t> triangles_;
     std::vector<int> rowInParent_;
+    std::vector<int> labels_;
+    std::vector<ClusterKey> keys_;
+    std::unordered_map<ClusterKey, Id> nodeOfKey_;
 };
 
 } // namespace hlod::widgets

@@ -8,6 +8,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
+#include <vtkMapper.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -53,7 +54,10 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     highlightActor_ = makeActor(true);
     highlightActor_->PickableOff();
     highlightActor_->GetProperty()->SetAmbient(0.45);
-    // Drawn over the same surfaces it highlights: pulled towards the camera in depth.
+    // Drawn over the very surfaces it highlights: pulled towards the camera in depth. The
+    // offsets act only with coincident topology resolved by polygon offset, which VTK leaves
+    // off unless asked (without it the highlight fought the mesh for every pixel).
+    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
     highlightActor_->GetMapper()->SetRelativeCoincidentTopologyPolygonOffsetParameters(-2.0, -40.0);
     overlay_ = vtkSmartPointer<vtkTextActor>::New();
     vtkTextProperty* text = overlay_->GetTextProperty();
@@ -74,6 +78,7 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
         prop->VisibilityOff();
         renderer->AddViewProp(prop);
     }
+    legend_.addTo(renderer);
 
     connect(model_, &StudioModel::viewChanged, this, &DisplayController::refresh);
     connect(model_, &StudioModel::sceneChanged, this, &DisplayController::refresh);
@@ -84,6 +89,7 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     connect(model_, &StudioModel::selectionChanged, this, [this] {
         refreshHighlight();
         if (model_->view().boundsOfSelectionOnly) refreshClusters();
+        updateLegend();
         viewport_->update();
     });
     connect(viewport_, &Viewport::aboutToRender, this, &DisplayController::beforeRender);
@@ -98,6 +104,7 @@ DisplayController::~DisplayController() {
                           static_cast<vtkProp*>(previewActor_), static_cast<vtkProp*>(boundsActor_),
                           static_cast<vtkProp*>(highlightActor_), static_cast<vtkProp*>(overlay_)})
         renderer->RemoveViewProp(prop);
+    legend_.removeFrom(renderer);
 }
 
 vtkSmartPointer<vtkActor> DisplayController::makeActor(bool lit) const {
@@ -138,7 +145,65 @@ void DisplayController::refresh() {
         previewActor_->GetMapper()->SetInputDataObject(vtkNew<vtkPolyData>());
     }
     refreshHighlight();
+    updateLegend();
     viewport_->update();
+}
+
+void DisplayController::updateLegend() {
+    using Entry = ViewportLegend::Entry;
+    std::vector<Entry> entries;
+    const bool built = model_->hasBuild() && model_->scene();
+    const DisplayMode mode = built ? model_->view().mode : DisplayMode::Original;
+    if (mode == DisplayMode::Clusters) {
+        entries.push_back({tr("Level %1: one colour per cluster").arg(model_->view().level),
+                           glm::vec3(1.0f), false});
+        // Clusters before single meshes, the largest first; the rest in one line.
+        const ClusterTree& tree = model_->built().build->tree;
+        std::vector<Id> shown = cut_;
+        const auto& triangles = model_->subtreeTriangles();
+        std::stable_sort(shown.begin(), shown.end(), [&](Id a, Id b) {
+            const bool leafA = tree.nodes[a].isLeaf(), leafB = tree.nodes[b].isLeaf();
+            if (leafA != leafB) return leafB;
+            return a < triangles.size() && b < triangles.size() && triangles[a] > triangles[b];
+        });
+        const std::size_t listed = std::min<std::size_t>(shown.size(), 6);
+        const std::vector<int>& labels = model_->clusterLabels();
+        const Scene& scene = *model_->scene();
+        for (std::size_t i = 0; i < listed; ++i) {
+            const Id n = shown[i];
+            QString text;
+            if (const ClusterNode& node = tree.nodes[n]; node.isLeaf()) {
+                const MeshInstance& instance = scene.instances[node.instance];
+                text = QString::fromStdString(scene.nodes[instance.node].name);
+                if (text.isEmpty()) text = tr("Mesh %1").arg(node.instance);
+            } else {
+                text = tr("Cluster %1").arg(n < labels.size() ? labels[n] : static_cast<int>(n));
+            }
+            entries.push_back({text, clusterColorOf(n, &labels)});
+        }
+        if (shown.size() > listed)
+            entries.push_back({shown.size() - listed == 1
+                                   ? tr("1 more cluster")
+                                   : tr("%1 more clusters").arg(shown.size() - listed),
+                               glm::vec3(0.6f), false});
+    } else if (mode == DisplayMode::Hlod && model_->view().tintByDepth) {
+        entries.push_back({tr("Tint: depth in the tree"), glm::vec3(1.0f), false});
+        std::vector<int> depths;
+        for (Id n : drawList_)
+            if (n < model_->depths().size()) depths.push_back(model_->depths()[n]);
+        std::sort(depths.begin(), depths.end());
+        depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
+        for (int d : depths)
+            entries.push_back(
+                {d == 0 ? tr("Depth 0 (root)") : tr("Depth %1").arg(d), depthColor(d)});
+    }
+    if (!entries.empty() && !model_->selection().instances.empty())
+        entries.push_back({tr("Selected"), highlightColor()});
+    legend_.setEntries(std::move(entries), viewport_->devicePixelRatioF());
+}
+
+std::vector<ViewportLegend::Entry> DisplayController::legendEntries() const {
+    return legend_.visible() ? legend_.entries() : std::vector<ViewportLegend::Entry>{};
 }
 
 void DisplayController::refreshClusters() {
@@ -150,7 +215,7 @@ void DisplayController::refreshClusters() {
         clusterActor_->GetMapper()->SetInputDataObject(coloring_->polyData());
     }
     const ClusterTree& tree = built.build->tree;
-    cut_ = coloring_->colorByLevel(tree, model_->view().level);
+    cut_ = coloring_->colorByLevel(tree, model_->view().level, &model_->clusterLabels());
     std::vector<Id> bounded = cut_;
     if (model_->view().boundsOfSelectionOnly) {
         // The selected clusters and the level's clusters inside them.
@@ -166,9 +231,10 @@ void DisplayController::refreshClusters() {
         }
     }
     boundsActor_->GetMapper()->SetInputDataObject(
-        boundsWireframe(tree, bounded, model_->view().bounds));
+        boundsWireframe(tree, bounded, model_->view().bounds, &model_->clusterLabels()));
     boundsActor_->SetVisibility(model_->view().bounds != BoundsShape::None);
     coloring_->polyData()->Modified();
+    updateLegend();
 }
 
 void DisplayController::refreshHighlight() {
@@ -178,8 +244,11 @@ void DisplayController::refreshHighlight() {
         highlightActor_->VisibilityOff();
         return;
     }
+    // In the HLOD preview the selection is lit as drawn (a proxy, not the originals behind it).
+    const bool preview = model_->hasBuild() && model_->view().mode == DisplayMode::Hlod;
     highlightActor_->GetMapper()->SetInputDataObject(
-        selectionHighlight(*scene, selection.instances));
+        preview ? previewHighlight(*scene, *model_->built().build, drawList_, selection.instances)
+                : selectionHighlight(*scene, selection.instances));
     highlightActor_->VisibilityOn();
 }
 
@@ -187,12 +256,25 @@ std::vector<Id> DisplayController::highlightedInstances() const {
     std::vector<Id> out;
     if (!highlightActor_->GetVisibility()) return out;
     auto* poly = vtkPolyData::SafeDownCast(highlightActor_->GetMapper()->GetInput());
-    auto* ids = poly ? vtkUnsignedIntArray::SafeDownCast(
-                           poly->GetCellData()->GetArray(SceneActors::kInstanceIdArray))
-                     : nullptr;
-    if (!ids) return out;
-    for (vtkIdType cell = 0; cell < ids->GetNumberOfTuples(); ++cell)
-        out.push_back(ids->GetValue(cell));
+    if (!poly) return out;
+    if (auto* ids = vtkUnsignedIntArray::SafeDownCast(
+            poly->GetCellData()->GetArray(SceneActors::kInstanceIdArray)))
+        for (vtkIdType cell = 0; cell < ids->GetNumberOfTuples(); ++cell)
+            out.push_back(ids->GetValue(cell));
+    // The preview's highlight names drawn nodes: their instances.
+    if (auto* nodes =
+            vtkUnsignedIntArray::SafeDownCast(poly->GetCellData()->GetArray(kNodeIdArray));
+        nodes && model_->hasBuild()) {
+        std::vector<Id> seen;
+        for (vtkIdType cell = 0; cell < nodes->GetNumberOfTuples(); ++cell)
+            seen.push_back(nodes->GetValue(cell));
+        std::sort(seen.begin(), seen.end());
+        seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+        for (Id n : seen) {
+            const std::vector<Id> below = instancesBelow(model_->built().build->tree, n);
+            out.insert(out.end(), below.begin(), below.end());
+        }
+    }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -231,10 +313,13 @@ void DisplayController::beforeRender() {
     }
     last_ = stats;
     if (mode == DisplayMode::Clusters)
-        setOverlay(tr("Level %1 of %2: %3 clusters")
-                       .arg(model_->view().level)
-                       .arg(model_->maxLevel())
-                       .arg(cut_.size()));
+        setOverlay(
+            cut_.size() == 1
+                ? tr("Level %1 of %2: 1 cluster").arg(model_->view().level).arg(model_->maxLevel())
+                : tr("Level %1 of %2: %3 clusters")
+                      .arg(model_->view().level)
+                      .arg(model_->maxLevel())
+                      .arg(cut_.size()));
     else
         setOverlay({});
     Q_EMIT frameStats(stats);
@@ -249,6 +334,8 @@ void DisplayController::updatePreview() {
         previewActor_->GetMapper()->SetInputDataObject(
             hlodPreview(*built.scene, *built.build, drawList_, depths));
         previewDirty_ = false;
+        refreshHighlight(); // lit as drawn: follows the draw list
+        updateLegend();
     }
     last_ = {result.drawCalls, result.triangles, result.nodesVisited};
     setOverlay(tr("Draw calls: %1\nTriangles: %2\nNodes visited: %3")

@@ -8,6 +8,13 @@
 // walked); when the draw list changed the preview geometry is rebuilt, so the view shows
 // exactly what an engine would draw for this camera: proxies of drawn inner nodes, original
 // meshes of drawn leaves. Every frame's counters go out through frameStats().
+// Legend (issue 20 #6): in Clusters mode the shown level's clusters with their colours (the
+// largest first) and the selection's colour; in the HLOD preview tinted by depth, the colour of
+// every depth drawn; hidden otherwise (ViewportLegend.h).
+// Highlight: the selected meshes in one flat colour, drawn in front of the surfaces they lie on
+// (polygon offset) so they never fight the mesh for depth; in the HLOD preview a selected
+// cluster drawn as a proxy is highlighted as that proxy (what is on screen), not as the
+// originals behind it.
 // Picking: a click selects the instance (original scene, clusters) or the cluster node (HLOD
 // preview; a drawn leaf selects its instance) under the cursor; a click on nothing clears it.
 // The controller owns VTK props only; all state it shows comes from the model.
@@ -24,6 +31,7 @@
 
 #include "pipeline/select/Camera.h"
 #include "pipeline/select/LodSelection.h"
+#include "widgets/ViewportLegend.h"
 
 class vtkActor;
 class vtkProp;
@@ -62,6 +70,8 @@ public:
     QString overlayText() const;
     // The instances the selection highlight draws (sorted; empty when it is hidden).
     std::vector<Id> highlightedInstances() const;
+    // The legend's lines (empty when it is hidden).
+    std::vector<ViewportLegend::Entry> legendEntries() const;
 
 Q_SIGNALS:
     void frameStats(const hlod::widgets::FrameStats& stats);
@@ -73,6 +83,7 @@ private:
     void beforeRender();
     void updatePreview();
     void setOverlay(const QString& text);
+    void updateLegend();
     vtkSmartPointer<vtkActor> makeActor(bool lit) const;
 
     StudioModel* model_;
@@ -82,6 +93,7 @@ private:
     vtkSmartPointer<vtkActor> previewActor_;
     vtkSmartPointer<vtkActor> highlightActor_;
     vtkSmartPointer<vtkTextActor> overlay_;
+    ViewportLegend legend_;
     std::unique_ptr<ClusterColoring> coloring_;
     const void* coloringFor_ = nullptr; // the build the colouring was made for
     std::vector<Id> cut_;

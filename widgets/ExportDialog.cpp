@@ -81,6 +81,7 @@ bool ExportDialog::startExport() {
     request.output = folder().toStdString();
     request.dlod = dlod_->isChecked();
     if (!exporter_->start(std::move(request))) return false;
+    Q_EMIT exportStarted(folder());
     status_->setText(tr("Exporting…"));
     bar_->setRange(0, 0);
     setRunning(true);

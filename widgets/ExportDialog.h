@@ -30,6 +30,10 @@ public:
     bool startExport();
     PackageExporter* exporter() const { return exporter_; }
 
+Q_SIGNALS:
+    // An export to `folder` started (the exporter's finished, failed or cancelled follows).
+    void exportStarted(const QString& folder);
+
 protected:
     void reject() override; // Cancel: stops a running export first
 

@@ -13,6 +13,18 @@
 
 namespace hlod::widgets {
 
+BuiltHlod withStatistics(std::shared_ptr<const Scene> scene,
+                         std::shared_ptr<const HlodBuild> build) {
+    BuiltHlod out;
+    out.original = originalStats(*scene);
+    out.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
+    out.share = proxyShare(*scene, build->tree, build->bake);
+    out.levels = levelTable(*scene, build->tree, build->bake);
+    out.build = std::move(build);
+    out.scene = std::move(scene);
+    return out;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -94,15 +106,13 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
         const auto start = Clock::now();
         auto build =
             std::make_shared<HlodBuild>(buildHlod(*scene, settings, progress, previous.get()));
-        result.original = originalStats(*scene);
-        result.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
         Progress quiet; // the package is measured silently, but a cancel stops it
         quiet.cancel = &job->cancel;
-        result.package = measurePackage(*scene, build->tree, build->bake, build->settings.bake, {},
+        result = withStatistics(std::move(scene), std::move(build));
+        result.package = measurePackage(*result.scene, result.build->tree, result.build->bake,
+                                        result.build->settings.bake, {},
                                         blockSizeAt(std::filesystem::temp_directory_path()), quiet);
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        result.build = std::move(build);
-        result.scene = std::move(scene);
     } catch (const Error& e) {
         wasCancelled = e.code() == ErrorCode::Cancelled;
         error = QString::fromStdString(e.what());

@@ -36,13 +36,19 @@ namespace hlod::widgets {
 struct BuiltHlod {
     std::shared_ptr<const Scene> scene; // the scene it was built from
     std::shared_ptr<const HlodBuild> build;
-    GeometryStats original; // BakeStats originalStats
-    GeometryStats hlod;     // BakeStats hlodStats
+    GeometryStats original;       // BakeStats originalStats
+    GeometryStats hlod;           // BakeStats hlodStats: originals plus every proxy
+    ProxyShare share;             // BakeStats proxyShare
+    std::vector<LevelRow> levels; // BakeStats levelTable
     // The package `hlod build` writes at the default compression, measured in memory: files and
     // bytes on disk (Package.h measurePackage, blocks of the temporary folder's file system).
     PackageSummary package;
     double seconds = 0.0;
 };
+
+// `build` of `scene` with its statistics (what a finished background build delivers).
+BuiltHlod withStatistics(std::shared_ptr<const Scene> scene,
+                         std::shared_ptr<const HlodBuild> build);
 
 class HlodBuilder : public QObject {
     Q_OBJECT

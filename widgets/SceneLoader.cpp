@@ -47,7 +47,7 @@ void SceneLoader::cancel() {
     current_ = 0;
 }
 
-void SceneLoader::load(const QStringList& files) {
+void SceneLoader::load(const QStringList& files, const ImportOptions& options) {
     cancel();
     auto job = std::make_unique<Job>();
     job->id = nextId_++;
@@ -56,10 +56,10 @@ void SceneLoader::load(const QStringList& files) {
     jobs_.push_back(std::move(job));
     ++running_;
     Q_EMIT started(files);
-    raw->thread = std::thread([this, raw, files] { run(raw, files); });
+    raw->thread = std::thread([this, raw, files, options] { run(raw, files, options); });
 }
 
-void SceneLoader::run(Job* job, QStringList files) {
+void SceneLoader::run(Job* job, QStringList files, ImportOptions options) {
     const std::uint64_t id = job->id;
     auto post = [this](auto&& fn) {
         QMetaObject::invokeMethod(this, std::forward<decltype(fn)>(fn), Qt::QueuedConnection);
@@ -89,7 +89,7 @@ void SceneLoader::run(Job* job, QStringList files) {
         for (const QString& file : files)
             paths.push_back(toPath(file));
         auto scene = std::make_shared<Scene>(paths.empty() ? makeSampleScene()
-                                                           : importScene(paths, {}, progress));
+                                                           : importScene(paths, options, progress));
         result.importSeconds = secondsSince(start);
         progress.throwIfCancelled();
         const auto buildStart = Clock::now();

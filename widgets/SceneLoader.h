@@ -18,6 +18,7 @@
 #include <QObject>
 #include <QStringList>
 
+#include "pipeline/io/Import.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::widgets {
@@ -38,9 +39,9 @@ public:
     explicit SceneLoader(QObject* parent = nullptr);
     ~SceneLoader() override;
 
-    // Starts loading `files` (files or folders, several form one scene); an empty list loads
-    // the embedded sample scene.
-    void load(const QStringList& files);
+    // Starts loading `files` (files or folders, several form one scene) with `options` (a
+    // project's Import parameters); an empty list loads the embedded sample scene.
+    void load(const QStringList& files, const ImportOptions& options = {});
     // Cancels the running load, if any; neither loaded() nor failed() follows for it.
     void cancel();
     bool busy() const { return current_ != 0; }
@@ -59,7 +60,7 @@ private:
         std::thread thread;
     };
 
-    void run(Job* job, QStringList files);
+    void run(Job* job, QStringList files, ImportOptions options);
     void finish(std::uint64_t id);
 
     std::vector<std::unique_ptr<Job>> jobs_;

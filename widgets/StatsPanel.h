@@ -1,6 +1,10 @@
 // The statistics dock: the thesis table (triangles, vertices, meshes, size; thesis tables
-// 6.2-6.6) for the original scene and the current HLOD, as BakeStats computes them, plus the
-// live plot of draw calls and triangles per frame.
+// 6.2-6.6) for the original scene and the current HLOD, as BakeStats computes them, what the
+// HLOD row counts (the original meshes plus every proxy: what the package stores, not what is
+// drawn at once) next to the proxies' share of the original, the per-level table (level,
+// nodes, mean children, error budget, proxy triangles, share; BakeStats levelTable, as
+// `hlod build` prints it), how many clusters the proxy economy dissolved, and the live plot of
+// draw calls and triangles per frame.
 // The panel shows the StudioModel's build and DisplayController's frames; it stores nothing.
 #pragma once
 
@@ -20,19 +24,38 @@ class StatsPanel : public QWidget {
 public:
     enum Column { TrianglesColumn = 0, VerticesColumn, MeshesColumn, SizeColumn, ColumnCount };
     enum Row { OriginalRow = 0, HlodRow, RowCount };
+    enum LevelColumn {
+        LevelLevelColumn = 0,
+        LevelNodesColumn,
+        LevelChildrenColumn,
+        LevelBudgetColumn,
+        LevelTrianglesColumn,
+        LevelShareColumn,
+        LevelColumnCount
+    };
 
     explicit StatsPanel(StudioModel* model, QWidget* parent = nullptr);
 
     QTableWidget* table() const { return table_; }
+    QTableWidget* levelTable() const { return levels_; }
+    // What the HLOD row counts and the proxies' share ("HLOD = the original meshes + ...").
+    QLabel* countsNote() const { return note_; }
+    // The proxy economy's dissolved clusters.
+    QLabel* economyLabel() const { return economy_; }
+    QLabel* summaryLabel() const { return summary_; }
     StatsPlot* plot() const { return plot_; }
 
     void showFrame(const hlod::widgets::FrameStats& stats);
 
 private:
     void refresh();
+    void refreshLevels();
 
     StudioModel* model_;
     QTableWidget* table_ = nullptr;
+    QLabel* note_ = nullptr;
+    QTableWidget* levels_ = nullptr;
+    QLabel* economy_ = nullptr;
     QLabel* summary_ = nullptr;
     StatsPlot* plot_ = nullptr;
 };

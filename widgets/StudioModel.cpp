@@ -2,12 +2,44 @@
 #include "widgets/StudioModel.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/view/TreeViews.h"
 #include "widgets/doc/ProjectSession.h"
 
 namespace hlod::widgets {
+
+namespace {
+
+// The clusters of `tree` whose meshes are all `chosen` and whose parent's are not.
+std::vector<Id> largestClustersWithin(const ClusterTree& tree, const std::vector<char>& chosen) {
+    std::vector<char> full(tree.nodes.size(), 0);
+    if (tree.root == kNoId) return {};
+    std::vector<std::pair<Id, bool>> stack{{tree.root, false}};
+    while (!stack.empty()) { // post-order
+        const auto [id, expanded] = stack.back();
+        stack.pop_back();
+        const ClusterNode& n = tree.nodes[id];
+        if (n.isLeaf()) {
+            full[id] = n.instance < chosen.size() && chosen[n.instance];
+        } else if (!expanded) {
+            stack.push_back({id, true});
+            for (Id c : n.children)
+                stack.push_back({c, false});
+        } else {
+            full[id] = std::all_of(n.children.begin(), n.children.end(),
+                                   [&](Id c) { return full[c] != 0; });
+        }
+    }
+    std::vector<Id> out;
+    for (Id n = 0; n < tree.nodes.size(); ++n)
+        if (full[n] && (tree.nodes[n].parent == kNoId || !full[tree.nodes[n].parent]))
+            out.push_back(n);
+    return out;
+}
+
+} // namespace
 
 bool displayModeFromString(const QString& text, DisplayMode& mode) {
     const QString t = text.trimmed().toLower();
@@ -49,6 +81,10 @@ void StudioModel::setScene(std::shared_ptr<const Scene> scene) {
     subtreeTriangles_.clear();
     depths_.clear();
     leafOfInstance_.clear();
+    labeller_.reset();
+    labels_.clear();
+    keys_.clear();
+    export_ = {};
     selection_ = {};
     if (wasBuilding) Q_EMIT buildCancelled();
     Q_EMIT sceneChanged();
@@ -84,10 +120,14 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
     if (result.scene != scene_) return; // built for a scene that is no longer open
     frontCache_.reset();
     selectionTree_.reset();
+    const std::shared_ptr<const HlodBuild> previous = built_.build;
+    const std::vector<ClusterKey> previousKeys = std::move(keys_);
     built_ = result;
     const ClusterTree& tree = built_.build->tree;
     subtreeTriangles_ = hlod::subtreeTriangles(tree, *scene_);
     depths_ = nodeDepths(tree);
+    keys_ = hlod::widgets::clusterKeys(tree);
+    labels_ = labeller_.assign(tree, keys_);
     leafOfInstance_.assign(scene_->instances.size(), kNoId);
     std::vector<std::uint64_t> drawCost(tree.nodes.size(), 0);
     for (Id n = 0; n < tree.nodes.size(); ++n) {
@@ -99,19 +139,77 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
             drawCost[n] = built_.build->bake.nodes[n].proxy.triangleCount();
         }
     }
-    selectionTree_ = std::make_unique<SelectionTree>(
-        tree, std::move(drawCost), rootHasNoProxy(tree, built_.build->bake));
+    selectionTree_ = std::make_unique<SelectionTree>(tree, std::move(drawCost),
+                                                     rootHasNoProxy(tree, built_.build->bake));
     frontCache_ = std::make_unique<FrontCache>(*selectionTree_);
-    // The selection keeps its instances; its cluster node is re-derived for the new tree.
-    StudioSelection selection = selection_;
-    selection.clusterNode =
-        selection.instances.size() == 1 ? leafOfInstance_[selection.instances[0]] : kNoId;
-    selection.clusterNodes.clear();
+    // The selection follows its clusters into the new tree before any view shows it.
+    StudioSelection selection = carrySelection(previous ? &previous->tree : nullptr, previousKeys);
+    if (selection.clusterNodes.empty() && selection.clusterNode != kNoId)
+        selection.clusterNodes = {selection.clusterNode};
+    const bool selectionMoved = !(selection == selection_);
+    selection_ = std::move(selection);
+    const int level = std::clamp(view_.level, 0, maxLevel());
+    const bool levelClamped = level != view_.level;
+    view_.level = level;
     Q_EMIT buildFinished();
-    applySelection(std::move(selection));
-    ViewOptions view = view_;
-    view.level = std::clamp(view.level, 0, maxLevel());
-    setView(view);
+    if (selectionMoved) Q_EMIT selectionChanged();
+    if (levelClamped) Q_EMIT viewChanged();
+    Q_EMIT exportChanged(); // up to date or not, against the new build
+}
+
+StudioSelection StudioModel::carrySelection(const ClusterTree* old,
+                                            const std::vector<ClusterKey>& oldKeys) {
+    const ClusterTree& tree = built_.build->tree;
+    StudioSelection out;
+    std::vector<Id> oldNodes = selection_.clusterNodes;
+    if (oldNodes.empty() && selection_.clusterNode != kNoId) oldNodes = {selection_.clusterNode};
+    const bool comparable = old && oldKeys.size() == old->nodes.size();
+    if (oldNodes.empty() || !comparable) {
+        // Meshes chosen in the scene tree or the viewport: the same meshes, their leaf if one.
+        out.instances = selection_.instances;
+        out.sceneNode = selection_.sceneNode;
+        if (out.instances.size() == 1 && out.instances[0] < leafOfInstance_.size())
+            out.clusterNode = leafOfInstance_[out.instances[0]];
+        return out;
+    }
+    std::unordered_map<ClusterKey, Id> nodeOfKey;
+    nodeOfKey.reserve(keys_.size());
+    for (Id n = 0; n < keys_.size(); ++n)
+        nodeOfKey.emplace(keys_[n], n);
+    std::vector<Id> kept;
+    bool lost = false;
+    Id current = kNoId;
+    for (Id node : oldNodes) {
+        const auto it = node < oldKeys.size() ? nodeOfKey.find(oldKeys[node]) : nodeOfKey.end();
+        if (it == nodeOfKey.end()) {
+            lost = true;
+            continue;
+        }
+        kept.push_back(it->second);
+        if (node == selection_.clusterNode) current = it->second;
+    }
+    if (lost) {
+        // The largest clusters of the new tree holding only meshes that were selected.
+        std::vector<char> chosen(scene_->instances.size(), 0);
+        for (Id i : selection_.instances)
+            if (i < chosen.size()) chosen[i] = 1;
+        kept = largestClustersWithin(tree, chosen);
+        current = kNoId;
+    }
+    std::sort(kept.begin(), kept.end());
+    kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+    if (kept.empty()) return out;
+    out.clusterNodes = kept;
+    out.clusterNode = current != kNoId ? current : kept.front();
+    for (Id node : kept) {
+        const std::vector<Id> below = instancesBelow(tree, node);
+        out.instances.insert(out.instances.end(), below.begin(), below.end());
+    }
+    std::sort(out.instances.begin(), out.instances.end());
+    out.instances.erase(std::unique(out.instances.begin(), out.instances.end()),
+                        out.instances.end());
+    if (out.instances.size() == 1) out.sceneNode = scene_->instances[out.instances[0]].node;
+    return out;
 }
 
 int StudioModel::maxLevel() const { return hasBuild() ? built_.build->tree.height() : 0; }
@@ -255,6 +353,33 @@ void StudioModel::setTintByDepth(bool on) {
     ViewOptions v = view_;
     v.tintByDepth = on;
     setView(v);
+}
+
+void StudioModel::exportStarted(const QString& folder) {
+    export_ = {ExportState::Status::Running, built_.build, folder, {}};
+    Q_EMIT exportChanged();
+}
+
+void StudioModel::exportFinished(const QString& folder) {
+    export_.status = ExportState::Status::Done;
+    export_.folder = folder;
+    Q_EMIT exportChanged();
+}
+
+void StudioModel::exportFailed(const QString& message) {
+    export_.status = ExportState::Status::Failed;
+    export_.message = message;
+    Q_EMIT exportChanged();
+}
+
+void StudioModel::exportCancelled() {
+    export_ = {};
+    Q_EMIT exportChanged();
+}
+
+bool StudioModel::exportUpToDate() const {
+    return export_.status == ExportState::Status::Done && export_.build &&
+           export_.build == built_.build;
 }
 
 SelectionResult StudioModel::selectLod(const Camera& camera) {

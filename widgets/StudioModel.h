@@ -13,6 +13,13 @@
 // Ctrl/Shift-click multi-selection in the Clusters tree); the instances are then the union of
 // their subtrees and clusterNode is the current one of them (the row clicked last).
 // Signals are emitted only on real changes, so views can sync both ways without loops.
+// Across rebuilds (an edit, its undo, a parameter change) clusters keep their identity
+// (ClusterIdentity.h): clusterLabels() gives a cluster the label it had while its meshes are the
+// same, and the selection keeps the clusters that still exist; when one is gone (split, moved
+// into), the largest clusters holding only the selected meshes are selected instead. The
+// selection is settled before buildFinished, so every view shows the new tree with it.
+// Export: the last package written from a build (exportState()), so the Pipeline dock can tell
+// whether the package is up to date with the shown build.
 #pragma once
 
 #include <memory>
@@ -23,6 +30,7 @@
 
 #include "pipeline/doc/HlodBuild.h"
 #include "pipeline/select/LodSelection.h"
+#include "widgets/ClusterIdentity.h"
 #include "widgets/HlodBuilder.h"
 
 namespace hlod {
@@ -52,6 +60,15 @@ struct StudioSelection {
     std::vector<Id> clusterNodes; // every selected cluster node, sorted
     bool empty() const { return instances.empty() && clusterNode == kNoId; }
     bool operator==(const StudioSelection&) const = default;
+};
+
+// The last package export of this session (File ▸ Export Package).
+struct ExportState {
+    enum class Status { None, Running, Done, Failed };
+    Status status = Status::None;
+    std::shared_ptr<const HlodBuild> build; // what was (is being) exported
+    QString folder;
+    QString message; // the error of a failed export
 };
 
 class StudioModel : public QObject {
@@ -87,6 +104,10 @@ public:
     // Per cluster node: original triangles of its subtree; its depth from the root.
     const std::vector<std::uint64_t>& subtreeTriangles() const { return subtreeTriangles_; }
     const std::vector<int>& depths() const { return depths_; }
+    // Per node of the current build: the cluster's label (stable across rebuilds, see above) and
+    // the key of its leaf set (ClusterIdentity.h). Empty without a build.
+    const std::vector<int>& clusterLabels() const { return labels_; }
+    const std::vector<ClusterKey>& clusterKeys() const { return keys_; }
     // Levels that can be shown: 0 .. height of the tree (0 without a build).
     int maxLevel() const;
     // A level with a handful of clusters (at most 12), what Clusters mode starts with.
@@ -114,6 +135,15 @@ public:
     // Empty without a build.
     SelectionResult selectLod(const Camera& camera);
 
+    // Export of the current build: started (Running), finished to `folder` (Done), failed.
+    void exportStarted(const QString& folder);
+    void exportFinished(const QString& folder);
+    void exportFailed(const QString& message);
+    void exportCancelled(); // back to no export
+    const ExportState& exportState() const { return export_; }
+    // A package of exactly the shown build has been written.
+    bool exportUpToDate() const;
+
 Q_SIGNALS:
     void sceneChanged();
     void settingsChanged();
@@ -124,11 +154,14 @@ Q_SIGNALS:
     void buildCancelled();
     void selectionChanged();
     void viewChanged();
+    void exportChanged();
 
 private:
     void applySelection(StudioSelection selection);
     void setView(const ViewOptions& view);
     std::vector<Id> instancesBelowSceneNode(Id node) const;
+    // The selection carried over from `old` (the previous tree and its keys) to the new build.
+    StudioSelection carrySelection(const ClusterTree* old, const std::vector<ClusterKey>& oldKeys);
 
     std::shared_ptr<const Scene> scene_;
     std::vector<std::vector<Id>> nodeInstances_; // per scene node: instances placed on it
@@ -139,6 +172,10 @@ private:
     std::vector<std::uint64_t> subtreeTriangles_;
     std::vector<int> depths_;
     std::vector<Id> leafOfInstance_;
+    ClusterLabels labeller_;
+    std::vector<int> labels_;
+    std::vector<ClusterKey> keys_;
+    ExportState export_;
     std::unique_ptr<SelectionTree> selectionTree_;
     std::unique_ptr<FrontCache> frontCache_; // refers to *selectionTree_
     StudioSelection selection_;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "Usage.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod::cli {
@@ -33,10 +34,39 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
                 throw Error(ErrorCode::InvalidArgument, "option " + name + " needs a value");
             }
         } else {
-            throw Error(ErrorCode::InvalidArgument, "unknown option " + name);
+            std::vector<std::string> known(valueOptions.begin(), valueOptions.end());
+            known.insert(known.end(), switches.begin(), switches.end());
+            const std::string hint = closestMatch(name, known);
+            throw Error(ErrorCode::InvalidArgument,
+                        "unknown option " + name +
+                            (hint.empty() ? std::string() : " (did you mean " + hint + "?)"));
         }
     }
 }
+
+namespace {
+
+std::set<std::string> valueFlagsOf(const CommandSpec& c) {
+    std::set<std::string> out = paramValueFlags(c.kinds);
+    for (const OptionSpec& o : c.options) {
+        if (o.value.empty()) continue;
+        out.insert(o.flag);
+        if (!o.alias.empty()) out.insert(o.alias);
+    }
+    return out;
+}
+
+std::set<std::string> switchesOf(const CommandSpec& c) {
+    std::set<std::string> out = paramSwitches(c.kinds);
+    for (const OptionSpec& o : c.options)
+        if (o.value.empty()) out.insert(o.flag);
+    return out;
+}
+
+} // namespace
+
+Args::Args(const std::vector<std::string>& argv, const CommandSpec& command)
+    : Args(argv, valueFlagsOf(command), switchesOf(command)) {}
 
 bool Args::has(const std::string& name) const {
     return switches_.count(name) || values_.count(name);
@@ -114,13 +144,16 @@ paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds) {
     for (const ParamDecl& d : parameterDeclarations()) {
         if (!ofKinds(d, kinds)) continue;
         if (d.type == ParamType::Bool) {
-            if (args.has(d.cliFlag)) out.push_back({&d, !d.cliNegated});
+            const bool on = !d.cliNegated;
+            if (args.has(d.cliFlag))
+                out.emplace_back(std::piecewise_construct, std::forward_as_tuple(&d),
+                                 std::forward_as_tuple(on));
             continue;
         }
-        for (const std::string& flag : {d.cliFlag, d.cliAlias}) {
-            if (flag.empty()) continue;
-            if (auto v = args.value(flag)) {
-                out.push_back({&d, parseParamText(d, *v, flag)});
+        for (const std::string* flag : {&d.cliFlag, &d.cliAlias}) {
+            if (flag->empty()) continue;
+            if (auto v = args.value(*flag)) {
+                out.push_back({&d, parseParamText(d, *v, *flag)});
                 break;
             }
         }

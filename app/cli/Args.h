@@ -1,6 +1,7 @@
 // Minimal command-line parsing for the `hlod` subcommands: positionals, `--name value`,
 // `--name=value` and boolean `--switch`. Unknown options are an error (a typo must not be
-// silently ignored).
+// silently ignored) that names the closest valid flag ("unknown option --screensize (did you
+// mean --screen-size?)").
 #pragma once
 
 #include <map>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "CommandSpec.h"
 #include "pipeline/graph/Parameters.h"
 
 namespace hlod::cli {
@@ -18,6 +20,8 @@ public:
     // `valueOptions` take a value, `switches` do not. Throws hlod::Error(InvalidArgument).
     Args(const std::vector<std::string>& argv, const std::set<std::string>& valueOptions,
          const std::set<std::string>& switches);
+    // The flags of `command`: its own and those of the parameters of its node kinds.
+    Args(const std::vector<std::string>& argv, const CommandSpec& command);
 
     const std::vector<std::string>& positionals() const { return positionals_; }
     bool has(const std::string& name) const;

@@ -21,10 +21,8 @@ struct LoadedScene {
     std::optional<PackageInfo> package; // set when the input is an exported HLOD package
 };
 
-// The import options every scene-reading command takes, from the Import parameters' declarations
-// (pipeline/graph/Parameters.h): --deflection R (CAD tessellation, relative to the model
-// diagonal) and --brep-unit M (metres per BREP unit; BREP has none).
-inline const std::set<std::string> kImportOptions = paramValueFlags({NodeKind::Import});
+// The import options (--deflection, --brep-unit: the Import parameters' declarations in
+// pipeline/graph/Parameters.h) given on the command line, defaults for the rest.
 ImportOptions importOptionsFromArgs(const Args& args);
 
 LoadedScene loadSceneArgs(const std::vector<std::string>& positionals,

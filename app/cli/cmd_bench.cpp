@@ -70,12 +70,7 @@ void parseSize(const std::string& text, int& w, int& h) {
 #endif
 
 int runBench(const CommandArgs& argv) {
-    std::set<std::string> valueOptions{"--out",     "-o",        "--frames",
-                                       "--size",    "--configs", "--path",
-                                       "--threads", "--shading", "--screen-size",
-                                       "--proxy-ratio"};
-    valueOptions.insert(kImportOptions.begin(), kImportOptions.end());
-    const Args args(argv, valueOptions, {"--no-cache"});
+    const Args args(argv, command("bench"));
 #ifndef HLOD_HAVE_VTK
     throw Error(ErrorCode::InvalidArgument,
                 "this hlod was built without VTK (HLOD_BUILD_GUI=OFF): bench cannot render");
@@ -90,6 +85,7 @@ int runBench(const CommandArgs& argv) {
     o.configs = parseConfigs(args.value("--configs", "all"));
     o.screenSize = args.number("--screen-size", o.screenSize, 1.0, 100000.0);
     o.proxyRatio = args.number("--proxy-ratio", o.proxyRatio, 0.05, 1.0);
+    o.levelGrowth = args.number("--level-growth", o.levelGrowth, 1.0, 16.0);
     if (auto p = args.value("--path")) o.pathFile = *p;
     o.threads = args.integer("--threads", 0, 0, 1024);
     const std::string shading = args.value("--shading", "geometry");

@@ -151,9 +151,7 @@ void printSummary(const NodeOutput& out) {
 } // namespace
 
 int runBuild(const CommandArgs& argv) {
-    std::set<std::string> switches = paramSwitches(kAllKinds);
-    switches.insert("--json");
-    const Args args(argv, paramValueFlags(kAllKinds), switches);
+    const Args args(argv, command("build"));
     const auto flags = paramsFromArgs(args, kAllKinds); // usage errors before any work
     Document doc = loadDocument(args.positionals());
     PipelineGraph& graph = doc.graph();

@@ -64,12 +64,12 @@ void printTree(const ClusterTree& tree) {
 } // namespace
 
 int runCluster(const CommandArgs& argv) {
-    const Args args(argv, {"--volume", "--k", "--max-children"}, {"--json"});
-    ClusterParams params;
-    params.volume = volumeTypeFromString(args.value("--volume", "sphere"));
-    params.k = args.number("--k", params.k, 0.0, 16.0);
-    params.maxChildren = args.integer("--max-children", params.maxChildren, 2, 1024);
-    const LoadedScene loaded = loadSceneArgs(args.positionals(), ImportOptions{});
+    const Args args(argv, command("cluster"));
+    ParamValues values = defaultValues(NodeKind::Cluster);
+    for (const auto& [decl, value] : paramsFromArgs(args, {NodeKind::Cluster}))
+        values[decl->key] = value;
+    const ClusterParams params = clusterParamsFrom(values);
+    const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
 
     const auto start = std::chrono::steady_clock::now();
     ClusterTree tree;

@@ -104,7 +104,7 @@ void printText(const LoadedScene& loaded) {
 } // namespace
 
 int runInfo(const CommandArgs& argv) {
-    const Args args(argv, kImportOptions, {"--json"});
+    const Args args(argv, command("info"));
     const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
     if (args.has("--json")) {
         std::cout << toJson(loaded).dump(2) << "\n";

@@ -28,6 +28,7 @@
 #include <QWindow>
 #include <vtkVersion.h>
 
+#include "pipeline/doc/ProjectFile.h"
 #include "pipeline/io/Import.h"
 #include "widgets/DisplayController.h"
 #include "widgets/LogView.h"
@@ -100,6 +101,14 @@ MainWindow::MainWindow(const QString& glProblem, QWidget* parent)
     updateTitle();
     updateCounts();
     resize(1280, 800);
+    // Once every dock is in place: the scene dock wide enough for the Clusters tab's names
+    // next to its four number columns, the right column for the parameter editors.
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("SceneDock")),
+                 findChild<QDockWidget*>(QStringLiteral("BuildDock"))},
+                {380, 400}, Qt::Horizontal);
+    resizeDocks({findChild<QDockWidget*>(QStringLiteral("BuildDock")),
+                 findChild<QDockWidget*>(QStringLiteral("StatsDock"))},
+                {390, 400}, Qt::Vertical);
     if (viewport_)
         connect(viewport_, &hlod::widgets::Viewport::glFailed, log_,
                 [this](const QString& m) { log_->error(m); });
@@ -111,8 +120,10 @@ MainWindow::~MainWindow() = default;
 void MainWindow::createActions() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open…"), this, &MainWindow::openDialog);
+    open->setObjectName(QStringLiteral("actionOpen"));
     open->setShortcut(QKeySequence::Open);
-    open->setStatusTip(tr("Open one or more scene files (several files form one scene)"));
+    open->setStatusTip(tr("Open a project, or one or more scene files (several files form one "
+                          "scene)"));
     QAction* folder = file->addAction(tr("Open &Folder…"), this, &MainWindow::openFolderDialog);
     folder->setStatusTip(tr("Open every loadable file in a folder as one scene"));
     recentMenu_ = file->addMenu(tr("Open &Recent"));
@@ -137,10 +148,14 @@ void MainWindow::createActions() {
     if (viewport_) {
         connect(fit, &QAction::triggered, viewport_, &hlod::widgets::Viewport::fitView);
         connect(reset, &QAction::triggered, viewport_, &hlod::widgets::Viewport::resetView);
-    } else {
-        fit->setEnabled(false);
-        reset->setEnabled(false);
     }
+    // The view actions apply to a scene in a working 3D view.
+    auto updateView = [this, fit, reset] {
+        fit->setEnabled(viewport_ && scene());
+        reset->setEnabled(viewport_ && scene());
+    };
+    connect(model_, &hlod::widgets::StudioModel::sceneChanged, this, updateView);
+    updateView();
     addCompareActions(viewMenu_);
     viewMenu_->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
@@ -177,7 +192,6 @@ void MainWindow::createDocks() {
     logDock->setObjectName(QStringLiteral("LogDock"));
     logDock->setWidget(log_);
     addDockWidget(Qt::BottomDockWidgetArea, logDock);
-    resizeDocks({sceneDock}, {320}, Qt::Horizontal);
     resizeDocks({logDock}, {130}, Qt::Vertical);
 }
 
@@ -215,8 +229,27 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 void MainWindow::openFiles(const QStringList& files) {
+    const auto project = std::find_if(files.begin(), files.end(), [](const QString& f) {
+        return f.endsWith(QLatin1String(hlod::kProjectExtension), Qt::CaseInsensitive);
+    });
+    if (project != files.end()) {
+        if (files.size() == 1) {
+            openProject(*project);
+            return;
+        }
+        const QString message =
+            tr("%1 is a project: open it on its own (its scene is in the project), not "
+               "together with other files")
+                .arg(QFileInfo(*project).fileName());
+        log_->error(message);
+        if (screenshotPath_.isEmpty())
+            QMessageBox::warning(this, tr("Could not open %1").arg(sceneName(files)), message);
+        else
+            exitScreenshotMode(2, message);
+        return;
+    }
     if (!maybeSave()) return;
-    projectLoad_ = false;
+    pendingProject_.reset();
     QStringList absolute;
     for (const QString& file : files)
         absolute << QFileInfo(file).absoluteFilePath();
@@ -227,11 +260,15 @@ void MainWindow::openDialog() {
     QStringList patterns;
     for (const std::string& pattern : hlod::loadablePatterns())
         patterns << QString::fromStdString(pattern);
-    const QString filter = tr("Scenes (%1)").arg(patterns.join(QLatin1Char(' '))) +
+    const QString project = QStringLiteral("*") + QLatin1String(hlod::kProjectExtension);
+    const QString filter = tr("Scenes and projects (%1)")
+                               .arg(patterns.join(QLatin1Char(' ')) + QLatin1Char(' ') + project) +
+                           QStringLiteral(";;") + tr("HLOD projects (%1)").arg(project) +
                            QStringLiteral(";;") + tr("All files (*)");
     const QString dir =
         sceneFiles_.isEmpty() ? QDir::homePath() : QFileInfo(sceneFiles_.front()).absolutePath();
-    const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open Scene"), dir, filter);
+    const QStringList files =
+        QFileDialog::getOpenFileNames(this, tr("Open Scene or Project"), dir, filter);
     if (!files.isEmpty()) openFiles(files);
 }
 
@@ -318,14 +355,20 @@ void MainWindow::onLoadProgress(const QString& stage, qint64 done, qint64 total)
 void MainWindow::onLoaded(const LoadedScene& result) {
     setBusy(false);
     sceneFiles_ = result.files;
+    firstBuildOfScene_ = true;
     model_->setScene(result.scene);
-    if (!projectLoad_) {
+    if (pendingProject_) {
+        adoptPendingProject(result.files);
+    } else {
         std::vector<std::filesystem::path> sources;
         for (const QString& file : result.files)
             sources.emplace_back(file.toStdString());
         session_->newDocument(std::move(sources));
+        if (!result.files.isEmpty() && writeSettings_) {
+            recent_.add(result.files);
+            rebuildRecentMenu();
+        }
     }
-    projectLoad_ = false;
     const std::shared_ptr<const hlod::Scene>& loadedScene = model_->scene();
     treeModel_->setScene(loadedScene);
     tree_->expandToDepth(0);
@@ -348,10 +391,6 @@ void MainWindow::onLoaded(const LoadedScene& result) {
                    .arg(locale.toString(static_cast<qulonglong>(stats.materials)))
                    .arg(seconds(result.importSeconds), seconds(result.buildSeconds))
                    .arg(layoutName(result.actors->layout())));
-    if (!result.files.isEmpty() && writeSettings_) {
-        recent_.add(result.files);
-        rebuildRecentMenu();
-    }
     updateTitle();
     updateCounts();
     if (startupPending_) {
@@ -363,13 +402,20 @@ void MainWindow::onLoaded(const LoadedScene& result) {
 
 void MainWindow::onLoadFailed(const QStringList& files, const QString& message) {
     setBusy(false);
-    projectLoad_ = false;
-    log_->error(message);
+    // A project whose scene cannot be read is not opened: the open document stays.
+    const QString title =
+        pendingProject_
+            ? tr("Could not open the project %1").arg(QFileInfo(pendingProject_->path).fileName())
+            : tr("Could not open %1").arg(sceneName(files));
+    const QString text =
+        pendingProject_ ? tr("Its scene could not be read: %1").arg(message) : message;
+    pendingProject_.reset();
+    log_->error(text);
     if (!screenshotPath_.isEmpty()) {
-        exitScreenshotMode(1, message);
+        exitScreenshotMode(1, text);
         return;
     }
-    QMessageBox::warning(this, tr("Could not open %1").arg(sceneName(files)), message);
+    QMessageBox::warning(this, title, text);
 }
 
 void MainWindow::onFrameRendered() {

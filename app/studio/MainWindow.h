@@ -10,6 +10,12 @@
 // clusters (MainWindowEdit.cpp), File saves and opens `.hlodproj` projects
 // (dirty mark in the title, save prompt on close, autosave and recovery) and exports packages.
 // Opening a scene (not a project) starts a new untitled project over it, keeping parameters.
+// Opening a project (issue 20: the command line, File ▸ Open, Open Project, Open Recent, drag
+// and drop, with the offer to recover a newer autosave) reads it first, then loads its scene
+// with its import parameters; only once the scene has loaded does the project replace the open
+// document (a project whose scene cannot be read leaves the window as it was, and says which
+// file failed). The project's HLOD is then built and shown in the display mode it was saved in
+// (HLOD preview by default): the window shows what the project describes.
 //
 // Ownership: the open scene, the HLOD build, the selection and the display options live in one
 // widgets::StudioModel; the viewport, trees, panels and the DisplayController only show them.
@@ -31,6 +37,7 @@
 #include <QStringList>
 
 #include "RecentScenes.h"
+#include "pipeline/doc/Document.h"
 #include "pipeline/scene/Scene.h"
 
 class QAction;
@@ -66,7 +73,8 @@ public:
     explicit MainWindow(const QString& glProblem = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Opens files or folders as one scene; an empty list opens the embedded sample scene.
+    // Opens files or folders as one scene; an empty list opens the embedded sample scene. A
+    // single `.hlodproj` opens as a project (openProject).
     void openFiles(const QStringList& files);
     // Window geometry and dock layout of the last session (not used for screenshots, which
     // must look the same on every machine).
@@ -107,8 +115,10 @@ public:
     hlod::widgets::BuildParameters* buildParameters() const { return buildParams_; }
     hlod::widgets::ProjectSession* session() const { return session_; }
     hlod::widgets::ClusterEditActions* clusterEdits() const { return clusterEdits_; }
-    // Opens a `.hlodproj` (offering to recover a newer autosave) and loads its scene.
+    // Opens a `.hlodproj` (offering to recover a newer autosave), loads its scene, builds and
+    // shows its HLOD. False when the project cannot be read (a message says why).
     bool openProject(const QString& path);
+    QMenu* recentMenu() const { return recentMenu_; }
     // Saves to the current project path (asks for one when untitled); false when not saved.
     bool saveProject();
     bool saveProjectAs();
@@ -149,6 +159,12 @@ private:
     bool maybeSave();
     void exportDialog();
     void onDocumentReplaced();
+    // The display (mode, level, tint) kept in the document's view state when saving, and the
+    // startup view that shows it again after opening.
+    void storeViewState();
+    StartupView viewFromProject() const;
+    // onLoaded for a project: adopt its document, then build and show it.
+    void adoptPendingProject(const QStringList& files);
     // MainWindowCompare.cpp: the comparison window (View menu, scene and document changes,
     // --compare startup and screenshot).
     void addCompareActions(QMenu* view);
@@ -187,15 +203,21 @@ private:
     hlod::widgets::ProjectSession* session_ = nullptr;
     hlod::widgets::ClusterEditActions* clusterEdits_ = nullptr;
     QAction* exportAction_ = nullptr;
-    bool projectLoad_ = false; // the running load opens a project's scene (keep the document)
+    struct PendingProject {
+        hlod::Document doc;
+        QString path;
+        bool recovered = false;
+    };
+    std::unique_ptr<PendingProject> pendingProject_; // read, waiting for its scene to load
+    bool firstBuildOfScene_ = true;                  // the next finished build is the scene's first
     hlod::widgets::DisplayToolBar* toolBar_ = nullptr;
     QLabel* buildLabel_ = nullptr;
     QProgressBar* buildBar_ = nullptr;
     QPushButton* cancelButton_ = nullptr;
     QAction* buildAction_ = nullptr;
     QAction* cancelAction_ = nullptr;
-    StartupView startup_;
-    bool startupPending_ = false;
+    StartupView startup_;         // what applyStartupView does next
+    bool startupPending_ = false; // applyStartupView runs once the scene has loaded
     hlod::widgets::SceneLoader* loader_ = nullptr;
     hlod::widgets::LogView* log_ = nullptr;
     QTreeView* tree_ = nullptr;

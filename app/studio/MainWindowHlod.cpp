@@ -19,6 +19,7 @@
 #include <QTimer>
 #include <QTreeView>
 
+#include "widgets/ClusterTreeExpansion.h"
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
 #include "widgets/DisplayToolBar.h"
@@ -37,20 +38,21 @@ void MainWindow::createHlodDocks() {
     clusterTree_->setModel(clusterModel_);
     clusterTree_->setUniformRowHeights(true);
     clusterTree_->setAlternatingRowColors(true);
+    // The name takes what the numbers leave; the numbers are as wide as their contents.
     clusterTree_->header()->setStretchLastSection(false);
+    clusterTree_->header()->setMinimumSectionSize(36);
     clusterTree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     clusterTree_->header()->setSectionResizeMode(hlod::widgets::ClusterTreeModel::NameColumn,
                                                  QHeaderView::Stretch);
     treeTabs_->addTab(clusterTree_, tr("Clusters"));
+    new hlod::widgets::ClusterTreeExpansion(clusterTree_, clusterModel_, this);
 
     createEditDocks(); // the Parameters ("BuildDock") and History docks
-    auto* buildDock = findChild<QDockWidget*>(QStringLiteral("BuildDock"));
     stats_ = new hlod::widgets::StatsPanel(model_);
     auto* statsDock = new QDockWidget(tr("Statistics"), this);
     statsDock->setObjectName(QStringLiteral("StatsDock"));
     statsDock->setWidget(stats_);
     addDockWidget(Qt::RightDockWidgetArea, statsDock);
-    resizeDocks({buildDock}, {400}, Qt::Horizontal);
 
     toolBar_ = new hlod::widgets::DisplayToolBar(model_, this);
     addToolBar(Qt::TopToolBarArea, toolBar_);
@@ -78,6 +80,14 @@ void MainWindow::createBuildMenu() {
                                   "of the Parameters dock, in the background"));
     cancelAction_ = build->addAction(tr("&Cancel Build"), model_, &StudioModel::cancelBuild);
     cancelAction_->setEnabled(false);
+    buildAction_->setObjectName(QStringLiteral("actionBuild"));
+    // Build HLOD applies to an open scene with no build running.
+    auto updateBuild = [this] { buildAction_->setEnabled(model_->scene() && !model_->building()); };
+    for (auto signal : {&StudioModel::sceneChanged, &StudioModel::buildStarted,
+                        &StudioModel::buildFinished, &StudioModel::buildCancelled})
+        connect(model_, signal, this, updateBuild);
+    connect(model_, &StudioModel::buildFailed, this, updateBuild);
+    updateBuild();
     build->addSeparator();
     build->addActions(
         {toolBar_->originalAction(), toolBar_->clustersAction(), toolBar_->hlodAction()});
@@ -138,9 +148,13 @@ void MainWindow::onBuildProgress(const QString& stage, qint64 done, qint64 total
 void MainWindow::onBuildFinished() {
     hideBuildProgress();
     const hlod::widgets::BuiltHlod& built = model_->built();
-    clusterModel_->setBuild(built.scene, built.build);
-    clusterTree_->expandToDepth(0);
-    model_->setLevel(model_->suggestedLevel());
+    clusterModel_->setBuild(built.scene, built.build, model_->clusterLabels());
+    if (firstBuildOfScene_) {
+        // Later builds (edits, parameters) keep the level the user chose.
+        clusterTree_->expandToDepth(0);
+        model_->setLevel(model_->suggestedLevel());
+        firstBuildOfScene_ = false;
+    }
     const QLocale locale;
     log_->info(tr("Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, "
                   "bake %5 s: %6 baked, %7 reused)")

@@ -1,7 +1,8 @@
 // Project files and export in the main window (see MainWindow.h): File ▸ Open Project, Save
 // Project (Ctrl+S), Save Project As, Export Package; the "save changes?" prompt on close and
 // before another scene or project replaces the document; the offer to recover a newer
-// autosave when a project opens.
+// autosave when a project opens; opening a project in two steps (read it, load its scene, then
+// adopt it, build and show it); the display kept in the project's view state.
 #include "MainWindow.h"
 
 #include <QAction>
@@ -11,8 +12,10 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QStatusBar>
 
 #include "pipeline/doc/ProjectFile.h"
+#include "pipeline/graph/Parameters.h"
 #include "widgets/ExportDialog.h"
 #include "widgets/LogView.h"
 #include "widgets/SceneLoader.h"
@@ -40,13 +43,19 @@ void MainWindow::addProjectActions(QMenu* file) {
     saveAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     file->addSeparator();
     exportAction_ = file->addAction(tr("&Export Package…"), this, &MainWindow::exportDialog);
+    exportAction_->setObjectName(QStringLiteral("actionExport"));
     exportAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportAction_->setStatusTip(tr("Write the current HLOD as a 3D Tiles package"));
     exportAction_->setEnabled(false);
-    connect(model_, &hlod::widgets::StudioModel::buildFinished, this,
-            [this] { exportAction_->setEnabled(model_->hasBuild()); });
-    connect(model_, &hlod::widgets::StudioModel::sceneChanged, this,
-            [this] { exportAction_->setEnabled(model_->hasBuild()); });
+    // Export applies to a finished build while no other build runs (it would replace it).
+    auto updateExport = [this] {
+        exportAction_->setEnabled(model_->hasBuild() && !model_->building());
+    };
+    using hlod::widgets::StudioModel;
+    for (auto signal : {&StudioModel::buildFinished, &StudioModel::sceneChanged,
+                        &StudioModel::buildStarted, &StudioModel::buildCancelled})
+        connect(model_, signal, this, updateExport);
+    connect(model_, &StudioModel::buildFailed, this, updateExport);
 }
 
 void MainWindow::openProjectDialog() {
@@ -69,26 +78,84 @@ bool MainWindow::openProject(const QString& path) {
                          "stopped before saving). Recover the autosaved changes?")
                           .arg(QFileInfo(file).fileName()),
                       QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) == QMessageBox::Yes;
+    std::unique_ptr<PendingProject> pending;
     try {
-        session_->open(file, recover);
+        pending.reset(new PendingProject{ProjectSession::read(file, recover), file, recover});
     } catch (const std::exception& e) {
-        log_->error(QString::fromStdString(e.what()));
-        QMessageBox::warning(this, tr("Could not open the project"),
-                             QString::fromStdString(e.what()));
+        const QString message = QString::fromStdString(e.what());
+        log_->error(message);
+        if (!screenshotPath_.isEmpty())
+            exitScreenshotMode(1, message);
+        else
+            QMessageBox::warning(this, tr("Could not open the project"), message);
         return false;
     }
-    log_->info(recover ? tr("Recovered %1 from its autosave").arg(file)
-                       : tr("Opened project %1").arg(file));
     QStringList files;
-    for (const std::filesystem::path& source : session_->document().sources())
+    for (const std::filesystem::path& source : pending->doc.sources())
         files << QString::fromStdString(source.string());
-    projectLoad_ = true;
-    loader_->load(files);
+    const hlod::PipelineGraph& graph = pending->doc.graph();
+    const hlod::NodeId import = pending->doc.importNode();
+    const hlod::ImportOptions options = import == hlod::kNoNode
+                                            ? hlod::ImportOptions{}
+                                            : hlod::importOptionsFrom(graph.node(import).params);
+    log_->info(recover ? tr("Recovering %1 from its autosave").arg(file)
+                       : tr("Opening project %1").arg(file));
+    pendingProject_ = std::move(pending);
+    loader_->load(files, options);
     return true;
+}
+
+void MainWindow::adoptPendingProject(const QStringList& files) {
+    const std::unique_ptr<PendingProject> project = std::move(pendingProject_);
+    session_->adopt(std::move(project->doc), project->path, project->recovered);
+    log_->info(project->recovered ? tr("Recovered %1 from its autosave").arg(project->path)
+                                  : tr("Opened project %1").arg(project->path));
+    if (writeSettings_) {
+        recent_.add({project->path});
+        rebuildRecentMenu();
+    }
+    Q_UNUSED(files);
+    // Show what the project describes: build its HLOD, then its saved display.
+    const StartupView saved = viewFromProject();
+    if (!startupPending_) startup_ = {};
+    startup_.build = true;
+    if (!startup_.mode) startup_.mode = saved.mode;
+    if (!startup_.level) startup_.level = saved.level;
+    startup_.tintByDepth = startup_.tintByDepth || saved.tintByDepth;
+    startupPending_ = true;
+    statusBar()->showMessage(tr("Opened %1: building its HLOD…").arg(session_->displayName()),
+                             8000);
+}
+
+MainWindow::StartupView MainWindow::viewFromProject() const {
+    StartupView view;
+    view.mode = QStringLiteral("hlod");
+    const nlohmann::json& state = session_->document().viewState();
+    const auto display = state.find("display");
+    if (display == state.end() || !display->is_object()) return view;
+    const QString mode = QString::fromStdString(display->value("mode", std::string("hlod")));
+    hlod::widgets::DisplayMode parsed;
+    if (hlod::widgets::displayModeFromString(mode, parsed)) view.mode = mode;
+    const auto level = display->find("level");
+    if (level != display->end() && level->is_number_integer() && level->get<int>() >= 0)
+        view.level = level->get<int>();
+    view.tintByDepth = display->value("tint_depth", false);
+    return view;
+}
+
+void MainWindow::storeViewState() {
+    const hlod::widgets::ViewOptions& view = model_->view();
+    const char* mode = view.mode == hlod::widgets::DisplayMode::Clusters ? "clusters"
+                       : view.mode == hlod::widgets::DisplayMode::Hlod   ? "hlod"
+                                                                         : "original";
+    nlohmann::json state = session_->document().viewState();
+    state["display"] = {{"mode", mode}, {"level", view.level}, {"tint_depth", view.tintByDepth}};
+    session_->document().setViewState(std::move(state));
 }
 
 bool MainWindow::saveProject() {
     if (session_->projectPath().isEmpty()) return saveProjectAs();
+    storeViewState();
     try {
         session_->save(session_->projectPath());
     } catch (const std::exception& e) {
@@ -111,6 +178,7 @@ bool MainWindow::saveProjectAs() {
     if (path.isEmpty()) return false;
     if (!path.endsWith(QLatin1String(hlod::kProjectExtension)))
         path += QLatin1String(hlod::kProjectExtension);
+    storeViewState();
     try {
         session_->save(path);
     } catch (const std::exception& e) {
@@ -150,11 +218,21 @@ void MainWindow::exportDialog() {
             ? QDir::home().filePath(QStringLiteral("hlod-package"))
             : QFileInfo(session_->projectPath()).absolutePath() + QStringLiteral("/package");
     hlod::widgets::ExportDialog dialog(std::move(request), folder, this);
+    dialog.setObjectName(QStringLiteral("ExportDialog"));
+    // The model knows what was exported: the Pipeline dock's Export node shows it.
+    connect(&dialog, &hlod::widgets::ExportDialog::exportStarted, model_,
+            &hlod::widgets::StudioModel::exportStarted);
     connect(dialog.exporter(), &hlod::widgets::PackageExporter::finished, this,
             [this](const QString& dir, qint64 files, qint64) {
+                model_->exportFinished(dir);
                 log_->info(tr("Exported the package to %1 (%2 files)").arg(dir).arg(files));
             });
     connect(dialog.exporter(), &hlod::widgets::PackageExporter::failed, this,
-            [this](const QString& message) { log_->error(message); });
+            [this](const QString& message) {
+                model_->exportFailed(message);
+                log_->error(message);
+            });
+    connect(dialog.exporter(), &hlod::widgets::PackageExporter::cancelled, model_,
+            &hlod::widgets::StudioModel::exportCancelled);
     dialog.exec();
 }

@@ -1,12 +1,14 @@
 // hlod-studio: the HLOD Studio editor. Sets up OpenGL, translations and the command line, probes
 // for an OpenGL 3.2 context before any window exists, then opens the main window.
 //
-//   hlod-studio [FILES...] [--screenshot OUT.png [--viewport-only]] [--size WxH] [--orbit AZ,EL]
+//   hlod-studio [FILES...|PROJECT.hlodproj] [--screenshot OUT.png [--viewport-only]] [--size WxH]
+//   [--orbit AZ,EL]
 //               [--build] [--mode original|clusters|hlod] [--level N] [--tint-depth]
 //               [--compare LEFT:RIGHT]
 //
-// With no file the embedded sample scene opens. --build runs the HLOD pipeline once the scene
-// is loaded; --mode picks the display mode (clusters and hlod need a build and imply --build);
+// With no file the embedded sample scene opens; a .hlodproj opens as a project (issue 20). --build
+// runs the HLOD pipeline once the scene is loaded; --mode picks the display mode (clusters and hlod
+// need a build and imply --build);
 // --level the cluster level shown in Clusters mode; --tint-depth tints the HLOD preview's
 // drawn nodes by their depth in the tree. --compare opens View ▸ Compare Configurations with
 // two configurations (e.g. sphere:aabb-k2, see widgets/compare/CompareConfig.h); with
@@ -33,7 +35,7 @@
 
 namespace {
 
-void installTranslators(QApplication& app) {
+void installTranslators(QCoreApplication& app) {
     // Swedish is the one translation we ship; Qt's own strings (dialog buttons) come from the
     // system's Qt translations when installed.
     const QLocale locale;
@@ -41,10 +43,10 @@ void installTranslators(QApplication& app) {
     auto* qt = new QTranslator(&app);
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(qt);
+        QCoreApplication::installTranslator(qt);
     auto* ours = new QTranslator(&app);
     if (ours->load(QStringLiteral(":/translations/hlod-studio_sv.qm")))
-        QApplication::installTranslator(ours);
+        QCoreApplication::installTranslator(ours);
 }
 
 struct Options {
@@ -89,8 +91,43 @@ bool parseStartup(const QCommandLineParser& parser, const QCommandLineOption& bu
     return true;
 }
 
+// --size and --orbit into `options`; false (after printing why) on bad values.
+bool parseGeometry(const QCommandLineParser& parser, const QCommandLineOption& size,
+                   const QCommandLineOption& orbit, Options& options) {
+    if (parser.isSet(size)) {
+        const auto match =
+            QRegularExpression(QStringLiteral("^(\\d+)x(\\d+)$")).match(parser.value(size));
+        if (!match.hasMatch() || match.captured(1).toInt() < 200 ||
+            match.captured(2).toInt() < 150) {
+            std::fprintf(stderr, "hlod-studio: %s\n",
+                         qPrintable(QCoreApplication::translate(
+                                        "main", "--size wants WIDTHxHEIGHT, at least 200x150, "
+                                                "not \"%1\"")
+                                        .arg(parser.value(size))));
+            return false;
+        }
+        options.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    if (parser.isSet(orbit)) {
+        const QStringList parts = parser.value(orbit).split(QLatin1Char(','));
+        bool okAz = false, okEl = false;
+        const double az = parts.size() == 2 ? parts[0].toDouble(&okAz) : 0.0;
+        const double el = parts.size() == 2 ? parts[1].toDouble(&okEl) : 0.0;
+        if (!okAz || !okEl) {
+            std::fprintf(stderr, "hlod-studio: %s\n",
+                         qPrintable(QCoreApplication::translate(
+                                        "main", "--orbit wants two angles in degrees, AZ,EL, "
+                                                "not \"%1\"")
+                                        .arg(parser.value(orbit))));
+            return false;
+        }
+        options.orbit = QPointF(az, el);
+    }
+    return true;
+}
+
 // Returns false (after printing why) on bad arguments.
-bool parseOptions(QApplication& app, Options& options) {
+bool parseOptions(QCoreApplication& app, Options& options) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "main", "HLOD Studio: build and inspect Hierarchical Level-of-Detail for 3D scenes."));
@@ -98,8 +135,10 @@ bool parseOptions(QApplication& app, Options& options) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QStringLiteral("files"),
-        QCoreApplication::translate("main", "Scene files or folders, opened as one scene."),
-        QStringLiteral("[FILES...]"));
+        QCoreApplication::translate("main", "Scene files or folders, opened as one scene; or one "
+                                            ".hlodproj project (its scene, parameters and hand "
+                                            "edits, built and shown)."),
+        QStringLiteral("[FILES...|PROJECT.hlodproj]"));
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
         QCoreApplication::translate("main",
@@ -152,41 +191,60 @@ bool parseOptions(QApplication& app, Options& options) {
     options.files = parser.positionalArguments();
     options.screenshot = parser.value(screenshot);
     options.viewportOnly = parser.isSet(viewportOnly);
-    if (parser.isSet(size)) {
-        const auto match =
-            QRegularExpression(QStringLiteral("^(\\d+)x(\\d+)$")).match(parser.value(size));
-        if (!match.hasMatch() || match.captured(1).toInt() < 200 ||
-            match.captured(2).toInt() < 150) {
-            std::fprintf(stderr, "hlod-studio: %s\n",
-                         qPrintable(QCoreApplication::translate(
-                                        "main", "--size wants WIDTHxHEIGHT, at least 200x150, "
-                                                "not \"%1\"")
-                                        .arg(parser.value(size))));
-            return false;
-        }
-        options.size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    return parseGeometry(parser, size, orbit, options);
+}
+
+void setApplicationNames() {
+    QCoreApplication::setApplicationName(QStringLiteral("hlod-studio"));
+    QCoreApplication::setOrganizationName(QStringLiteral("hlod"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HLOD_VERSION));
+}
+
+// --help and --version print and exit without a window, so they work without a display (over
+// ssh, and for help2man when the man page is made at build time).
+bool onlyPrints(int argc, char* argv[]) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "--help" || arg == "-h" || arg == "-?" || arg == "--help-all" ||
+            arg == "--version" || arg == "-v")
+            return true;
     }
-    if (parser.isSet(orbit)) {
-        const QStringList parts = parser.value(orbit).split(QLatin1Char(','));
-        bool okAz = false, okEl = false;
-        const double az = parts.size() == 2 ? parts[0].toDouble(&okAz) : 0.0;
-        const double el = parts.size() == 2 ? parts[1].toDouble(&okEl) : 0.0;
-        if (!okAz || !okEl) {
-            std::fprintf(stderr, "hlod-studio: %s\n",
-                         qPrintable(QCoreApplication::translate(
-                                        "main", "--orbit wants two angles in degrees, AZ,EL, "
-                                                "not \"%1\"")
-                                        .arg(parser.value(orbit))));
-            return false;
-        }
-        options.orbit = QPointF(az, el);
-    }
-    return true;
+    return false;
+}
+
+// Qt aborts when it cannot reach a display; say why and what to do instead (exit code 2).
+bool displayMissing() {
+#if defined(Q_OS_LINUX)
+    return qEnvironmentVariableIsEmpty("DISPLAY") &&
+           qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+           qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+#else
+    return false;
+#endif
 }
 
 } // namespace
 
 int main(int argc, char* argv[]) {
+    if (onlyPrints(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        Q_INIT_RESOURCE(resources); // the translation
+        setApplicationNames();
+        installTranslators(app);
+        Options options;
+        return parseOptions(app, options) ? 0 : 2; // process() exits after printing
+    }
+    if (displayMissing()) {
+        QCoreApplication app(argc, argv);
+        Q_INIT_RESOURCE(resources); // the translation
+        installTranslators(app);
+        std::fprintf(stderr, "hlod-studio: %s\n",
+                     qPrintable(QCoreApplication::translate(
+                         "main", "no display to open a window on (DISPLAY and WAYLAND_DISPLAY "
+                                 "are unset). Run it in a desktop session or under xvfb-run -a, "
+                                 "or use the hlod command-line tool (hlod --help).")));
+        return 2;
+    }
     // Must precede QApplication: every GL context Qt creates later uses this format, and
     // sharing lets the viewport survive being moved between top-level windows.
     QSurfaceFormat::setDefaultFormat(hlod::widgets::viewportSurfaceFormat());
@@ -194,10 +252,8 @@ int main(int argc, char* argv[]) {
 
     QApplication app(argc, argv);
     Q_INIT_RESOURCE(resources); // the icons live in a static library
-    QApplication::setApplicationName(QStringLiteral("hlod-studio"));
+    setApplicationNames();
     QApplication::setApplicationDisplayName(QStringLiteral("HLOD Studio"));
-    QApplication::setOrganizationName(QStringLiteral("hlod"));
-    QApplication::setApplicationVersion(QStringLiteral(HLOD_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/hlod-studio.png")));
     QApplication::setDesktopFileName(QStringLiteral("hlod-studio"));
     installTranslators(app);

@@ -19,8 +19,9 @@ struct ClusterParams {
     // Sphere and AABB trees: levels thinner than this are dissolved, so that a parent is at
     // least this many times wider than its inner children (LevelGrowth.h); 1 keeps the merges.
     double levelGrowth = 2.0;
-    // Hand-edit constraints: each group is a set of instance ids clustered as one locked unit
-    // (kept whole); excluded instances become their own leaf directly under the root.
+    // Hand-edit constraints: each group is a set of instance ids kept whole as one locked
+    // subtree; excluded instances become their own leaf directly under the root. Both change
+    // the automatic tree only locally (LocalConstraints.h).
     std::vector<std::vector<Id>> lockedGroups;
     std::vector<Id> excluded;
 };

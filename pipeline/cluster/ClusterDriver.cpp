@@ -2,9 +2,11 @@
 #include "pipeline/cluster/ClusterDriver.h"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 
 #include "pipeline/bounds/InstanceBounds.h"
+#include "pipeline/cluster/LocalConstraints.h"
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -77,35 +79,13 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
     for (Id i = 0; i < bounds.size(); ++i) {
         builder.addLeaf(i, bounds[i].box, model.leaf(bounds[i].sphere, bounds[i].box, minExtent));
     }
-    std::vector<char> taken(bounds.size(), 0);
-    std::vector<Id> units;
-    for (const std::vector<Id>& group : params.lockedGroups) {
-        std::vector<Id> members(group.begin(), group.end());
-        std::sort(members.begin(), members.end());
-        members.erase(std::unique(members.begin(), members.end()), members.end());
-        for (Id id : members)
-            taken[id] = 1;
-        const Id root = merge(builder, members, params.maxChildren, progress);
-        builder.setLocked(root, true);
-        units.push_back(root);
-    }
-    std::vector<Id> excluded(params.excluded.begin(), params.excluded.end());
-    std::sort(excluded.begin(), excluded.end());
-    excluded.erase(std::unique(excluded.begin(), excluded.end()), excluded.end());
-    for (Id id : excluded)
-        taken[id] = 1;
-    for (Id i = 0; i < bounds.size(); ++i) {
-        if (!taken[i]) units.push_back(i);
-    }
-    std::sort(units.begin(), units.end());
-
-    Id root = units.empty() ? kNoId : merge(builder, units, params.maxChildren, progress);
-    if (!excluded.empty()) {
-        std::vector<Id> top = excluded;
-        if (root != kNoId) top.push_back(root);
-        root = top.size() == 1 ? top[0] : builder.addFoldedNode(std::move(top));
-    }
-    return builder.finish(root, params.volume, params.k);
+    // The automatic tree over every instance; the hand edits then change it locally.
+    std::vector<Id> units(bounds.size());
+    std::iota(units.begin(), units.end(), Id{0});
+    const Id root = units.empty() ? kNoId : merge(builder, units, params.maxChildren, progress);
+    ClusterTree tree = builder.finish(root, params.volume, params.k);
+    if (params.lockedGroups.empty() && params.excluded.empty()) return tree;
+    return applyLocalConstraints(std::move(tree), params, model, minExtent);
 }
 
 } // namespace hlod

@@ -8,13 +8,11 @@
 //   Welzl sphere or world AABB (InstanceBounds.h), padded to the minimum extent
 //   minExtent = 1e-4 x the scene's world-box diagonal (1e-6 m for a scene of one point), so a
 //   flat part has a thin but non-zero box and a finite proportion ratio (CostModel.h).
-// - Locked groups (ClusterParams::lockedGroups): each group is first clustered on its own with
-//   the same strategy; its subtree root is marked `locked` and enters the main clustering as one
-//   unit, so the group is kept whole (nothing outside joins below its root). A group of one
-//   instance is that locked leaf.
-// - Excluded instances: never merged. When there are any, the root is a new node whose
-//   children are the clustered root and the excluded leaves (the maxChildren cap does not
-//   apply to that one node); its fill folds eq. 3.1 over the children in id order.
+// - Hand edits (ClusterParams::lockedGroups, ::excluded): the automatic tree over every
+//   instance is built first, then the edits change it locally (LocalConstraints.h): a locked
+//   group becomes (or already is) one locked subtree, an excluded instance hangs from a new root
+//   beside the rest (the maxChildren cap does not apply to a changed node); every cluster the
+//   edits do not touch stays as the automatic tree has it.
 // - Node fields: sphere = clustering sphere (Sappa's pairwise EncapsulateSpheres, tracked for
 //   every volume type), box = exact hull of the leaves' world boxes, fill and cost from the
 //   cost model passed in.

@@ -20,6 +20,10 @@ bool sameBaking(const HlodSettings& a, const HlodSettings& b) {
     return paramsFrom(a.bake) == paramsFrom(b.bake);
 }
 
+HlodSettings hlodSettingsFrom(const ParamValues& clusterValues, const ParamValues& bakeValues) {
+    return HlodSettings{clusterParamsFrom(clusterValues), bakeParamsFrom(bakeValues)};
+}
+
 HlodBuild buildHlod(const Scene& scene, const HlodSettings& settings, const Progress& progress,
                     const HlodBuild* previous) {
     using Clock = std::chrono::steady_clock;

@@ -18,6 +18,7 @@
 #include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/core/Progress.h"
 #include "pipeline/graph/HandEdits.h"
+#include "pipeline/graph/Parameters.h"
 #include "pipeline/proxy/ProxyBaker.h"
 #include "pipeline/scene/Scene.h"
 
@@ -33,6 +34,10 @@ struct HlodSettings {
 // the same proxies for one tree (every bake parameter).
 bool sameClustering(const HlodSettings& a, const HlodSettings& b);
 bool sameBaking(const HlodSettings& a, const HlodSettings& b);
+
+// The settings of the Cluster and Bake parameter values (pipeline/graph/Parameters.h), without
+// hand edits.
+HlodSettings hlodSettingsFrom(const ParamValues& clusterValues, const ParamValues& bakeValues);
 
 struct HlodBuild {
     HlodSettings settings;

@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "pipeline/core/Error.h"
-#include "pipeline/doc/HlodBuild.h"
 #include "pipeline/export/Geo.h"
 
 namespace hlod {
@@ -458,10 +457,6 @@ BakeParams bakeParamsFrom(const ParamValues& v) {
         p.cacheDir = dir.empty() ? defaultProxyCacheDir() : std::filesystem::path(dir);
     }
     return p;
-}
-
-HlodSettings hlodSettingsFrom(const ParamValues& clusterValues, const ParamValues& bakeValues) {
-    return HlodSettings{clusterParamsFrom(clusterValues), bakeParamsFrom(bakeValues)};
 }
 
 ParamValues paramsFrom(const ImportOptions& o) {

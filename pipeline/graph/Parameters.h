@@ -26,8 +26,6 @@
 
 namespace hlod {
 
-struct HlodSettings; // pipeline/doc/HlodBuild.h
-
 // The pipeline stages; every parameter belongs to one of them.
 enum class NodeKind { Import, Cluster, Bake, Export };
 const char* toString(NodeKind kind);
@@ -97,12 +95,12 @@ ParamValues paramsFromJson(NodeKind kind, const nlohmann::json& j,
                            const std::filesystem::path& file = {});
 
 // Conversions to and from the pipeline's parameter structs (hand edits are not parameters:
-// they live in HandEdits.h).
+// they live in HandEdits.h; both together make the document's HlodSettings, hlodSettingsFrom in
+// pipeline/doc/HlodBuild.h, a layer above).
 ImportOptions importOptionsFrom(const ParamValues& importValues);
 ClusterParams clusterParamsFrom(const ParamValues& clusterValues);
 // `cache` on and `cache_dir` empty resolve to defaultProxyCacheDir().
 BakeParams bakeParamsFrom(const ParamValues& bakeValues);
-HlodSettings hlodSettingsFrom(const ParamValues& clusterValues, const ParamValues& bakeValues);
 ParamValues paramsFrom(const ImportOptions& options);
 ParamValues paramsFrom(const ClusterParams& params);
 ParamValues paramsFrom(const BakeParams& params);

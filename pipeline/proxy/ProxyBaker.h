@@ -63,7 +63,7 @@ struct BakeParams {
     // rho of the proxy economy: a proxy is kept when its triangles are at most this fraction of
     // its inputs' triangles; >= 1 keeps every proxy (the tree as clustered). Not part of the
     // cache key (the decision is made on the cached proxy).
-    double proxyRatio = 0.5;
+    double proxyRatio = 0.35;
 };
 
 struct NodeBake {

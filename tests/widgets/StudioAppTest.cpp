@@ -18,10 +18,13 @@ struct StudioRun {
     QString stderrText;
 };
 
-StudioRun runStudio(const QStringList& args, const QStringList& extraEnvironment = {}) {
+StudioRun runStudio(const QStringList& args, const QStringList& extraEnvironment = {},
+                    const QStringList& unset = {}) {
     QProcess process;
     QStringList environment = QProcess::systemEnvironment();
     environment << extraEnvironment;
+    for (const QString& name : unset)
+        environment.removeIf([&](const QString& e) { return e.startsWith(name + '='); });
     process.setEnvironment(environment);
     process.start(kStudio, args);
     StudioRun run;
@@ -44,6 +47,21 @@ protected:
     }
     QTemporaryDir dir;
 };
+
+TEST_F(StudioApp, WithoutADisplayItSaysSoInsteadOfAborting) {
+    const StudioRun run = runStudio({}, {},
+                                    {QStringLiteral("DISPLAY"), QStringLiteral("WAYLAND_DISPLAY"),
+                                     QStringLiteral("QT_QPA_PLATFORM")});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_TRUE(run.stderrText.contains(QStringLiteral("no display")))
+        << run.stderrText.toStdString();
+    // --help needs none.
+    const StudioRun help =
+        runStudio({QStringLiteral("--help")}, {},
+                  {QStringLiteral("DISPLAY"), QStringLiteral("WAYLAND_DISPLAY")});
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_TRUE(help.stdoutText.contains(QStringLiteral("PROJECT.hlodproj")));
+}
 
 TEST_F(StudioApp, ScreenshotOfTheSampleSceneHasTheRequestedSize) {
     const QString out = dir.filePath(QStringLiteral("sample.png"));

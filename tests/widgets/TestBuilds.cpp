@@ -22,13 +22,8 @@ HlodSettings testSettings() {
 }
 
 BuiltHlod buildNow(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {
-    BuiltHlod out;
     auto build = std::make_shared<HlodBuild>(buildHlod(*scene, settings));
-    out.original = originalStats(*scene);
-    out.hlod = hlodStats(*scene, build->tree, build->bake, hlodVersionName(build->tree));
-    out.build = std::move(build);
-    out.scene = std::move(scene);
-    return out;
+    return withStatistics(std::move(scene), std::move(build));
 }
 
 Scene makeCubeRow() {

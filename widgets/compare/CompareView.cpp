@@ -7,6 +7,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSplitter>
 #include <QVBoxLayout>
 
@@ -55,6 +56,8 @@ CompareView::CompareView(QWidget* parent) : QWidget(parent) {
     fit_->setToolTip(tr("Show the whole scene in both views (F)"));
     rebuild_ = new QPushButton(tr("Rebuild Both"));
     rebuild_->setToolTip(tr("Build both sides again with the document's current settings"));
+    close_ = new QPushButton(tr("Close"));
+    close_->setToolTip(tr("Close the comparison (Esc); its builds stop"));
     message_ = new QLabel;
     auto* bar = new QHBoxLayout;
     bar->addWidget(linkBox_);
@@ -62,6 +65,7 @@ CompareView::CompareView(QWidget* parent) : QWidget(parent) {
     bar->addWidget(rebuild_);
     bar->addSpacing(12);
     bar->addWidget(message_, 1);
+    bar->addWidget(close_);
 
     auto* panes = new QSplitter(Qt::Horizontal);
     panes->addWidget(left_);
@@ -78,6 +82,10 @@ CompareView::CompareView(QWidget* parent) : QWidget(parent) {
     connect(linkBox_, &QCheckBox::toggled, link_, &CameraLink::setEnabled);
     connect(fit_, &QPushButton::clicked, this, &CompareView::fitView);
     connect(rebuild_, &QPushButton::clicked, this, &CompareView::rebuildAll);
+    connect(close_, &QPushButton::clicked, this, &QWidget::close);
+    auto* escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    escape->setContext(Qt::WindowShortcut);
+    connect(escape, &QShortcut::activated, this, &QWidget::close);
     for (ComparePane* pane : {left_, right_}) {
         const auto side = pane == left_ ? CompareTable::Left : CompareTable::Right;
         connect(pane, &ComparePane::stateChanged, this, [this, pane] { onStateChanged(pane); });

@@ -13,7 +13,8 @@
 // The view shows BuiltHlods and holds no pipeline state of its own; closing it cancels the
 // builds, destroying it also joins them.
 // Keys: F fits both views to the scene (the panes' viewports show no SceneActors of their
-// own, so the view fits to the scene's instance boxes itself).
+// own, so the view fits to the scene's instance boxes itself); Esc or the Close button closes
+// the window (issue 20 #8).
 #pragma once
 
 #include <memory>
@@ -68,6 +69,7 @@ public:
     CameraLink* cameraLink() const { return link_; }
     QCheckBox* linkBox() const { return linkBox_; }
     QLabel* messageLabel() const { return message_; }
+    QPushButton* closeButton() const { return close_; }
 
 Q_SIGNALS:
     // Both sides finished building (after any build of either side).
@@ -91,6 +93,7 @@ private:
     QCheckBox* linkBox_ = nullptr;
     QPushButton* fit_ = nullptr;
     QPushButton* rebuild_ = nullptr;
+    QPushButton* close_ = nullptr;
     QLabel* message_ = nullptr;
     UndoAdapter* undo_ = nullptr;
     int upAxis_ = 1;

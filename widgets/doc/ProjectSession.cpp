@@ -90,10 +90,17 @@ void ProjectSession::save(const QString& path) {
 }
 
 void ProjectSession::open(const QString& path, bool fromAutosave) {
+    adopt(read(path, fromAutosave), path, fromAutosave);
+}
+
+Document ProjectSession::read(const QString& path, bool fromAutosave) {
     const std::filesystem::path file = path.toStdString();
-    Document doc = fromAutosave ? openAutosave(file) : openProject(file);
-    if (!fromAutosave) removeAutosave(file);
-    replace(std::move(doc), path, fromAutosave);
+    return fromAutosave ? openAutosave(file) : openProject(file);
+}
+
+void ProjectSession::adopt(Document doc, const QString& path, bool recovered) {
+    if (!recovered) removeAutosave(path.toStdString());
+    replace(std::move(doc), path, recovered);
 }
 
 bool ProjectSession::hasNewerAutosave(const QString& path) {

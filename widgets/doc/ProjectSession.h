@@ -50,8 +50,15 @@ public:
     void newDocument(std::vector<std::filesystem::path> sources);
     // Saves to `path` (becomes the project path), marks clean, removes the autosave.
     void save(const QString& path);
-    // Opens `path` (or its autosave when `fromAutosave`; the result is then dirty).
+    // Opens `path` (or its autosave when `fromAutosave`; the result is then dirty):
+    // adopt(read(path, fromAutosave), path, fromAutosave).
     void open(const QString& path, bool fromAutosave = false);
+    // The document in `path` (or its autosave); the session is not touched. Throws hlod::Error
+    // naming the file.
+    static Document read(const QString& path, bool fromAutosave = false);
+    // Makes `doc`, read from `path`, the open project (dirty when `recovered` from the
+    // autosave; otherwise the autosave, declined, is removed).
+    void adopt(Document doc, const QString& path, bool recovered);
     // Whether `path` has an autosave newer than itself (an offer to recover).
     static bool hasNewerAutosave(const QString& path);
     // Writes the autosave now when dirty and titled; true when one was written.

@@ -68,6 +68,7 @@ PipelineEditor::PipelineEditor(ProjectSession* session, StudioModel* model, QWid
 
     connect(session_, &ProjectSession::documentChanged, this, &PipelineEditor::onDocumentChanged);
     connect(model_, &StudioModel::sceneChanged, this, &PipelineEditor::updateStatuses);
+    connect(model_, &StudioModel::exportChanged, this, &PipelineEditor::updateStatuses);
     connect(model_, &StudioModel::buildStarted, this, [this] {
         // HlodBuilder reuses the shown tree when the clustering settings did not change.
         const bool reuse = model_->hasBuild() &&
@@ -136,8 +137,26 @@ void PipelineEditor::updateStatuses() {
     };
     set(cluster, QStringLiteral("cluster"), clusterDone);
     set(bake, QStringLiteral("bake"), bakeDone);
-    if (const NodeId exp = doc.exportNode(); exp != kNoNode)
-        messages[exp] = tr("Runs on File ▸ Export Package");
+    if (const NodeId exp = doc.exportNode(); exp != kNoNode) {
+        const ExportState& ex = model_->exportState();
+        const bool sameBuild = ex.build && ex.build == model_->built().build && bakeDone;
+        if (ex.status == ExportState::Status::Running && sameBuild) {
+            statuses[exp] = NodeStatus::Running;
+        } else if (ex.status == ExportState::Status::Done && sameBuild) {
+            statuses[exp] = NodeStatus::UpToDate;
+            messages[exp] = tr("Exported to %1").arg(ex.folder);
+        } else if (ex.status == ExportState::Status::Failed && sameBuild) {
+            statuses[exp] = NodeStatus::Failed;
+            messages[exp] = ex.message;
+        } else {
+            statuses[exp] = NodeStatus::Pending;
+            messages[exp] = ex.status == ExportState::Status::Done
+                                ? tr("The package in %1 is older than the HLOD shown: export "
+                                     "again (File ▸ Export Package)")
+                                      .arg(ex.folder)
+                                : tr("Runs on File ▸ Export Package");
+        }
+    }
     view_->setStatuses(std::move(statuses), std::move(messages));
 }
 

@@ -18,8 +18,10 @@
 // "failed" (tooltip: the message) until the settings change; otherwise Cluster and Bake are up to
 // date when the document's settings (HlodSettings: sameClustering, sameBaking) are the ones of
 // the build shown, else pending. A bake parameter change leaves Cluster up to date: only the
-// bake reruns. Export runs on File ▸ Export Package and other nodes are not built by the editor:
-// they show the graph's own run state (pending).
+// bake reruns. Export runs on File ▸ Export Package (issue 20 #3): running while the package is
+// written, up to date once the package of exactly the shown build is written (tooltip: the
+// folder), failed with the message, pending again when the build changes. Other nodes are not
+// built by the editor: they show the graph's own run state (pending).
 #pragma once
 
 #include <optional>

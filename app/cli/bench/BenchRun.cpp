@@ -130,6 +130,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
         if (c.kind != Kind::Hlod) continue;
         HlodSettings settings;
         settings.cluster = clusterParamsFor(c.key);
+        settings.cluster.levelGrowth = o.levelGrowth;
         settings.bake = bake;
         c.build = std::make_unique<HlodBuild>(buildHlod(scene, settings, bar.progress()));
         c.name = hlodVersionName(c.build->tree);

@@ -30,6 +30,8 @@
 #include <vector>
 
 #include "OffscreenRenderer.h"
+#include "pipeline/cluster/Cluster.h"
+#include "pipeline/proxy/ProxyBaker.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::cli {
@@ -42,7 +44,8 @@ struct BenchOptions {
     int height = 360;
     std::vector<std::string> configs; // keys: original dlod sphere aabb0 aabb1 aabb2 octree
     double screenSize = 300.0;        // bake S at the 1080 px reference viewport
-    double proxyRatio = 0.5;          // rho of the proxy economy (ProxyBaker.h)
+    double proxyRatio = BakeParams{}.proxyRatio;     // rho of the proxy economy (ProxyBaker.h)
+    double levelGrowth = ClusterParams{}.levelGrowth; // LevelGrowth.h
     std::optional<std::filesystem::path> pathFile;
     int threads = 0;
     Shading shading = Shading::Geometry;

@@ -1,0 +1,113 @@
+// The subcommands of `hlod` and what each accepts (see CommandSpec.h). A command's pipeline
+// parameters come from their declarations (pipeline/graph/Parameters.cpp): a parameter added
+// there is a flag of every command that takes its node kind, with its help, default and range.
+#include <algorithm>
+
+#include "Commands.h"
+#include "pipeline/core/Error.h"
+
+namespace hlod::cli {
+
+namespace {
+
+const OptionSpec kJson{"--json", "", "", "Print machine-readable JSON on stdout instead of text.",
+                       ""};
+
+std::vector<CommandSpec> makeCommands() {
+    using N = NodeKind;
+    const std::pair<std::string, std::string> scene{
+        "SCENE...", "Scene files or folders, read as one scene (each file under its own node); "
+                    "none: the embedded sample scene."};
+    std::vector<CommandSpec> v;
+    v.push_back({"info",
+                 runInfo,
+                 {"hlod info [SCENE|DIR|PACKAGE...] [options]"},
+                 "Counts of a scene: nodes, unique meshes, instances, draw calls, triangles, "
+                 "vertices, materials, depth, bounds in metres and the file size. Given an "
+                 "exported package folder, reads it back (tree, proxy triangles, originals).",
+                 {scene, {"PACKAGE", "A folder written by hlod build (tileset.json, hlod.json)."}},
+                 {N::Import},
+                 {{"--json", "", "",
+                   "Print JSON on stdout, with every mesh instance (node name, path, mesh, "
+                   "material).",
+                   ""}}});
+    v.push_back({"cluster",
+                 runCluster,
+                 {"hlod cluster [SCENE...] [options]"},
+                 "Builds the HLOD cluster tree (bounding spheres after Sappa & Garcia, AABBs with "
+                 "the proportion constraint k, a loose octree, or the original hierarchy) and "
+                 "prints it with its quality metrics.",
+                 {scene},
+                 {N::Import, N::Cluster},
+                 {{"--json", "", "",
+                   "Print JSON on stdout: every node (parent, children, instance, bounds, fill, "
+                   "cost, level).",
+                   ""}}});
+    v.push_back({"build",
+                 runBuild,
+                 {"hlod build [SCENE...] -o DIR [options]",
+                  "hlod build PROJECT.hlodproj [-o DIR] [options]"},
+                 "Clusters the scene, bakes a proxy for every inner node (in parallel, cached on "
+                 "disk by content hash) and writes the 3D Tiles package to DIR, then prints the "
+                 "thesis-style table (triangles, vertices, meshes, size) for the original, the "
+                 "DLOD chain and the HLOD. A project saved by the editor builds as saved, hand "
+                 "edits included; flags given here override the project's values.",
+                 {scene,
+                  {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
+                                       "and hand edits)."}},
+                 {N::Import, N::Cluster, N::Bake, N::Export},
+                 {kJson}});
+    v.push_back(
+        {"bench",
+         runBench,
+         {"hlod bench [SCENE...] --out DIR [options]"},
+         "Renders a deterministic camera path offscreen for each configuration (original, DLOD "
+         "chain, HLOD sphere, AABB k=0/1/2, octree) and writes summary.json, frames.csv, "
+         "tables.md, plots and side-by-side frames. Needs an X display (xvfb-run -a).",
+         {scene},
+         {N::Import},
+         {{"--out", "-o", "DIR", "Folder for the results.", ""},
+          {"--frames", "", "N", "Frames along the camera path (2 to 100000).", "300"},
+          {"--size", "", "WxH", "Frame size in pixels (64x64 to 8192x8192).", "640x360"},
+          {"--configs", "", "LIST",
+           "Comma-separated configurations: original, dlod, sphere, aabb0, aabb1, aabb2, "
+           "octree, or all.",
+           "all"},
+          {"--screen-size", "", "PX", "Screen size S the proxies are baked for (1 to 100000 px).",
+           "300 px"},
+          {"--proxy-ratio", "", "RHO",
+           "Proxy economy: a cluster keeps its proxy only when it has at most this fraction of "
+           "the triangles it replaces (0.05 to 1).",
+           "0.35"},
+          {"--level-growth", "", "G",
+           "Sphere and AABB trees: each level at least G times wider than the one below (1 to "
+           "16; 1 keeps every merge).",
+           "2"},
+          {"--path", "", "FILE.json", "Camera path to fly instead of the generated one.", ""},
+          {"--threads", "", "N", "Baking threads (0 to 1024; 0 = all hardware threads).", "0"},
+          {"--shading", "", "geometry|colour",
+           "geometry: grey, lit; colour: the materials' base colours.", "geometry"},
+          {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
+    return v;
+}
+
+} // namespace
+
+const std::vector<CommandSpec>& commands() {
+    static const std::vector<CommandSpec> all = makeCommands();
+    return all;
+}
+
+const CommandSpec* findCommand(const std::string& name) {
+    const auto& all = commands();
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const CommandSpec& c) { return c.name == name; });
+    return it == all.end() ? nullptr : &*it;
+}
+
+const CommandSpec& command(const std::string& name) {
+    if (const CommandSpec* c = findCommand(name)) return *c;
+    throw Error(ErrorCode::InvalidArgument, "unknown command '" + name + "'");
+}
+
+} // namespace hlod::cli
