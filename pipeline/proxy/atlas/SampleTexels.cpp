@@ -1,0 +1,126 @@
+// Normal-ray texel sampling with a closest-point fallback, see SampleTexels.h.
+#include "pipeline/proxy/atlas/SampleTexels.h"
+
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+namespace hlod {
+
+namespace {
+
+struct SourceLookup {
+    const SourceSurfaces& s;
+    TextureMips& mips;
+    std::vector<float> texelsPerMetre; // per triangle: density of its texture's texels
+
+    SourceLookup(const SourceSurfaces& sources, TextureMips& m) : s(sources), mips(m) {
+        texelsPerMetre.assign(s.triangleCount(), 0.0f);
+        for (std::size_t t = 0; t < s.triangleCount(); ++t) {
+            const SourceMaterial& mat = s.materials[s.triangleMaterial[t]];
+            if (!mat.texture) continue;
+            const std::uint32_t a = s.indices[3 * t], b = s.indices[3 * t + 1],
+                                c = s.indices[3 * t + 2];
+            const float world =
+                glm::length(glm::cross(s.positions[b] - s.positions[a], s.positions[c] - s.positions[a]));
+            const glm::vec2 du = s.uvs[b] - s.uvs[a], dv = s.uvs[c] - s.uvs[a];
+            const float uv = std::abs(du.x * dv.y - du.y * dv.x) *
+                             static_cast<float>(mat.texture->width) *
+                             static_cast<float>(mat.texture->height);
+            texelsPerMetre[t] = world > 0.0f ? std::sqrt(uv / world) : 0.0f;
+        }
+    }
+
+    // Linear RGBA of triangle t at barycentrics (w0, w1, w2).
+    glm::vec4 colour(std::uint32_t t, const glm::vec3& w, float texelSize) const {
+        const SourceMaterial& mat = s.materials[s.triangleMaterial[t]];
+        const std::uint32_t a = s.indices[3 * t], b = s.indices[3 * t + 1], c = s.indices[3 * t + 2];
+        glm::vec4 out = mat.factor * (w.x * s.colors[a] + w.y * s.colors[b] + w.z * s.colors[c]);
+        if (mat.texture) {
+            const glm::vec2 uv = w.x * s.uvs[a] + w.y * s.uvs[b] + w.z * s.uvs[c];
+            out *= mips.sample(*mat.texture, uv, texelSize * texelsPerMetre[t]);
+        }
+        return out;
+    }
+
+    bool cutOut(std::uint32_t t, const glm::vec4& c) const {
+        const SourceMaterial& mat = s.materials[s.triangleMaterial[t]];
+        return mat.alphaMode == AlphaMode::Mask && c.a < mat.alphaCutoff;
+    }
+};
+
+glm::u8vec4 toTexel(const glm::vec4& c) {
+    auto byte = [](float v) {
+        return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
+    return {byte(linearToSrgb(c.r)), byte(linearToSrgb(c.g)), byte(linearToSrgb(c.b)), 255};
+}
+
+} // namespace
+
+void sampleTexels(const ProxySurface& proxy, const TexelCoverage& coverage,
+                  const SourceSurfaces& sources, const SurfaceBvh& bvh, TextureMips& mips,
+                  float reach, float texelSize, RgbaImage& image, std::vector<TexelState>& state) {
+    const int w = coverage.width, h = coverage.height;
+    image = RgbaImage(w, h, glm::u8vec4(0, 0, 0, 255));
+    state.assign(static_cast<std::size_t>(w) * h, TexelState::Empty);
+    const SourceLookup lookup(sources, mips);
+    tbb::parallel_for(0, h, [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * w + x;
+            const std::int32_t tri = coverage.triangle[i];
+            if (tri < 0) continue;
+            const glm::vec3& b = coverage.bary[i];
+            const std::uint32_t ia = proxy.indices[3 * tri], ib = proxy.indices[3 * tri + 1],
+                                ic = proxy.indices[3 * tri + 2];
+            const glm::vec3 p =
+                b.x * proxy.positions[ia] + b.y * proxy.positions[ib] + b.z * proxy.positions[ic];
+            glm::vec3 n(0.0f);
+            if (!proxy.normals.empty())
+                n = b.x * proxy.normals[ia] + b.y * proxy.normals[ib] + b.z * proxy.normals[ic];
+            if (!(glm::length(n) > 1e-12f))
+                n = glm::cross(proxy.positions[ib] - proxy.positions[ia],
+                               proxy.positions[ic] - proxy.positions[ia]);
+            const float len = glm::length(n);
+            n = len > 0.0f ? n / len : glm::vec3(0, 0, 1);
+            std::uint32_t best = 0xffffffffu;
+            float bestT = std::numeric_limits<float>::infinity();
+            glm::vec4 bestColour(0.0f);
+            bool crossedCutOut = false;
+            bvh.forEachHit(p, n, -reach, reach, [&](const SegmentHit& hit) {
+                const float d = std::abs(hit.t);
+                if (d > bestT || (d == bestT && hit.triangle > best)) return;
+                const glm::vec3 wts(1.0f - hit.bary.x - hit.bary.y, hit.bary.x, hit.bary.y);
+                const glm::vec4 c = lookup.colour(hit.triangle, wts, texelSize);
+                if (lookup.cutOut(hit.triangle, c)) {
+                    crossedCutOut = true;
+                    return;
+                }
+                best = hit.triangle;
+                bestT = d;
+                bestColour = c;
+            });
+            if (best == 0xffffffffu && !crossedCutOut) {
+                const ClosestPoint cp = bvh.closest(p);
+                if (cp.triangle != 0xffffffffu) {
+                    const glm::vec4 c = lookup.colour(cp.triangle, cp.bary, texelSize);
+                    if (lookup.cutOut(cp.triangle, c)) crossedCutOut = true;
+                    else {
+                        best = cp.triangle;
+                        bestColour = c;
+                    }
+                }
+            }
+            if (best == 0xffffffffu) {
+                state[i] = crossedCutOut ? TexelState::CutOut : TexelState::Empty;
+                if (crossedCutOut) image.set(x, y, glm::u8vec4(0, 0, 0, 0));
+                continue;
+            }
+            state[i] = TexelState::Opaque;
+            image.set(x, y, toTexel(bestColour));
+        }
+    });
+}
+
+} // namespace hlod
