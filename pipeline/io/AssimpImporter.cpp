@@ -81,10 +81,10 @@ Texture embeddedTexture(const aiTexture* tex, const std::string& name) {
 // Formats without an alpha mode (OBJ, FBX, AC3D...): a texture with translucent texels is a
 // cut-out (trees, fences, barriers drawn as textured quads, as TORCS draws them with alpha
 // testing); a material with an opacity below 1 blends.
-void chooseAlphaMode(Material& mat, const Texture* texture) {
+void chooseAlphaMode(Material& mat, bool translucentTexels) {
     if (mat.baseColor.a < 1.0f) {
         mat.alphaMode = AlphaMode::Blend;
-    } else if (texture && texture->image && texture->image->hasTranslucentTexels()) {
+    } else if (translucentTexels) {
         mat.alphaMode = AlphaMode::Mask;
         mat.alphaCutoff = 0.5f;
     }
@@ -117,7 +117,7 @@ public:
                    m->GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS) {
             readTexture(path.C_Str(), mat);
         }
-        chooseAlphaMode(mat, mat.texture == kNoId ? nullptr : &out_.textures[mat.texture]);
+        chooseAlphaMode(mat, mat.texture != kNoId && translucent_[mat.texture]);
         return mat;
     }
 
@@ -141,13 +141,17 @@ private:
         useTexture(p.string(), mat, [&] { return loadTexture(p); });
     }
 
-    // One Texture per distinct reference, decoded once; its mean colour computed once.
+    // One Texture per distinct reference, decoded once; its mean colour and whether it has
+    // transparent texels computed once.
     template <class Load> void useTexture(const std::string& key, Material& mat, Load load) {
         auto it = cache_.find(key);
         if (it == cache_.end()) {
             Texture t = load();
             const glm::vec4 mean = t.image ? meanLinearColor(*t.image) : glm::vec4(1.0f);
-            it = cache_.emplace(key, std::make_pair(out_.addTexture(std::move(t)), mean)).first;
+            const bool translucent = t.image && t.image->hasTranslucentTexels();
+            const Id id = out_.addTexture(std::move(t));
+            translucent_[id] = translucent;
+            it = cache_.emplace(key, std::make_pair(id, mean)).first;
         }
         mat.texture = it->second.first;
         mat.textureMean = it->second.second;
@@ -157,6 +161,7 @@ private:
     fs::path folder_;
     Scene& out_;
     std::map<std::string, std::pair<Id, glm::vec4>> cache_;
+    std::map<Id, bool> translucent_;
 };
 
 // For AC3D files: per assimp material, the first texture its object names (see

@@ -34,22 +34,26 @@ float linearToSrgb(float c) {
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-float srgbByteToLinear(std::uint8_t c) {
-    static const std::array<float, 256> table = [] {
-        std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i)
-            t[static_cast<std::size_t>(i)] = srgbToLinear(static_cast<float>(i) / 255.0f);
-        return t;
-    }();
-    return table[c];
-}
+namespace {
+
+// Built before main (no guard on every lookup: texture sampling calls this per channel).
+const std::array<float, 256> kSrgbToLinear = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i)
+        t[static_cast<std::size_t>(i)] = srgbToLinear(static_cast<float>(i) / 255.0f);
+    return t;
+}();
+
+} // namespace
+
+float srgbByteToLinear(std::uint8_t c) { return kSrgbToLinear[c]; }
 
 namespace {
 
-glm::vec4 linearTexel(const RgbaImage& image, int x, int y) {
+inline glm::vec4 linearTexel(const RgbaImage& image, int x, int y) {
     const std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
-    return {srgbByteToLinear(p[0]), srgbByteToLinear(p[1]), srgbByteToLinear(p[2]),
-            static_cast<float>(p[3]) / 255.0f};
+    return {kSrgbToLinear[p[0]], kSrgbToLinear[p[1]], kSrgbToLinear[p[2]],
+            static_cast<float>(p[3]) * (1.0f / 255.0f)};
 }
 
 int wrap(int i, int n) {

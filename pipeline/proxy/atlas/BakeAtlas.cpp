@@ -68,6 +68,9 @@ ProxyMesh bakeAtlas(const ProxyMesh& proxy, const SourceSurfaces& sources, doubl
                     double texelSize, const AtlasOptions& options, TextureMips& mips) {
     if (!options.enabled || proxy.empty() || sources.triangleCount() == 0 || !(texelSize > 0.0))
         return proxy;
+    const bool textured = std::any_of(sources.materials.begin(), sources.materials.end(),
+                                      [](const SourceMaterial& m) { return m.texture != nullptr; });
+    if (options.skipUntextured && !textured) return proxy;
     const Charting charting =
         buildCharts(proxy.positions, proxy.indices, options.maxNormalDegrees);
     const AtlasLayout layout = packCharts(charting.charts, static_cast<float>(texelSize),
@@ -88,7 +91,7 @@ ProxyMesh bakeAtlas(const ProxyMesh& proxy, const SourceSurfaces& sources, doubl
                  layout.texelSize, image, state);
     const bool mask =
         std::any_of(state.begin(), state.end(), [](TexelState s) { return s == TexelState::CutOut; });
-    dilateAtlas(image, state, std::max(8, 4 * options.padding));
+    dilateAtlas(image, state, 2 * options.padding + 2);
     out.atlas = encodeAtlas(std::move(image), mask, options.jpegQuality);
     return out;
 }

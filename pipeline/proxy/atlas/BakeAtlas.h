@@ -9,8 +9,8 @@
 // deviates by at most e, so the cast reaches 1.5 e) and the texel size (metres, node diameter
 // / S for one texel per pixel at the switch).
 // Output: the proxy with vertices split at chart seams (positions, normals and colours copied,
-// one uv per vertex) and its ProxyAtlas. A proxy without triangles, or sources without
-// triangles, is returned unchanged (no atlas).
+// one uv per vertex) and its ProxyAtlas. A proxy without triangles, sources without
+// triangles, or (skipUntextured) sources without any texture: returned unchanged (no atlas).
 // Deterministic for any thread count (each stage is); the image depends on the proxy, the
 // sources (geometry, uvs, vertex colours, materials and texture texels) and the options.
 #pragma once
@@ -26,7 +26,11 @@ struct AtlasOptions {
     int maxSize = 2048;       // atlas side cap, texels (power of two)
     int padding = 2;          // gutter texels around every chart
     int jpegQuality = 90;
-    float maxNormalDegrees = 50.0f; // chart normal cone (Charts.h)
+    float maxNormalDegrees = 60.0f; // chart normal cone (Charts.h)
+    // Sources without any texture: keep the vertex colours (they already carry factor x
+    // vertex colour; an atlas would add bake time and bytes for little: godot-room measures the
+    // same with and without).
+    bool skipUntextured = true;
 };
 
 ProxyMesh bakeAtlas(const ProxyMesh& proxy, const SourceSurfaces& sources, double errorBudget,

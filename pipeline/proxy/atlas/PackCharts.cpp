@@ -37,6 +37,8 @@ bool tryPack(const std::vector<glm::ivec2>& sizes, int width, int height,
 
 } // namespace
 
+int roundUp4(double v) { return (static_cast<int>(std::ceil(v)) + 3) & ~3; }
+
 AtlasLayout packCharts(const std::vector<Chart>& charts, float texelSize, int maxSize,
                        int padding) {
     AtlasLayout layout;
@@ -52,24 +54,22 @@ AtlasLayout packCharts(const std::vector<Chart>& charts, float texelSize, int ma
             widest = std::max(widest, sizes.back().x);
             tallest = std::max(tallest, sizes.back().y);
         }
-        // The smallest power-of-two sizes with room for the area (packers need some slack)
-        // and the largest rectangle, width >= height, growing one side at a time.
-        int w = 16, h = 16;
-        while ((w < widest || static_cast<double>(w) * h < area * 1.1) && w < maxSize) {
-            if (w <= h) w *= 2;
-            else h *= 2;
-        }
-        while (h < tallest && h < maxSize)
-            h *= 2;
-        while (true) {
+        // A square with room for the area (packers need some slack) and the largest
+        // rectangle, grown by 6 % steps until everything fits; then cut to the rows used.
+        int side = std::max({16, widest, roundUp4(std::sqrt(area * 1.08))});
+        int w = std::min(roundUp4(side), maxSize), h = std::min(std::max(w, roundUp4(tallest)), maxSize);
+        while (widest <= maxSize && tallest <= maxSize) {
             if (widest <= w && tallest <= h && tryPack(sizes, w, h, layout.placements)) {
+                int used = 0;
+                for (const ChartPlacement& p : layout.placements)
+                    used = std::max(used, p.offset.y + p.size.y);
                 layout.width = w;
-                layout.height = h;
+                layout.height = std::max(16, roundUp4(used));
                 return layout;
             }
             if (w == maxSize && h == maxSize) break;
-            if (h < w) h *= 2;
-            else w *= 2;
+            w = std::min(maxSize, roundUp4(w * 1.06));
+            h = std::min(maxSize, roundUp4(h * 1.06));
         }
         layout.texelSize *= 1.15f; // does not fit the cap: coarser texels
     }

@@ -12,10 +12,12 @@ namespace {
 
 struct SourceLookup {
     const SourceSurfaces& s;
-    TextureMips& mips;
+    std::vector<MipLevels> mips;       // per material (empty levels: untextured)
     std::vector<float> texelsPerMetre; // per triangle: density of its texture's texels
 
-    SourceLookup(const SourceSurfaces& sources, TextureMips& m) : s(sources), mips(m) {
+    SourceLookup(const SourceSurfaces& sources, TextureMips& pyramids) : s(sources) {
+        for (const SourceMaterial& m : s.materials)
+            mips.push_back(m.texture ? pyramids.levelsOf(*m.texture) : MipLevels{});
         texelsPerMetre.assign(s.triangleCount(), 0.0f);
         for (std::size_t t = 0; t < s.triangleCount(); ++t) {
             const SourceMaterial& mat = s.materials[s.triangleMaterial[t]];
@@ -39,7 +41,7 @@ struct SourceLookup {
         glm::vec4 out = mat.factor * (w.x * s.colors[a] + w.y * s.colors[b] + w.z * s.colors[c]);
         if (mat.texture) {
             const glm::vec2 uv = w.x * s.uvs[a] + w.y * s.uvs[b] + w.z * s.uvs[c];
-            out *= mips.sample(*mat.texture, uv, texelSize * texelsPerMetre[t]);
+            out *= mips[s.triangleMaterial[t]].sample(uv, texelSize * texelsPerMetre[t]);
         }
         return out;
     }
@@ -50,11 +52,22 @@ struct SourceLookup {
     }
 };
 
+// Linear -> 8-bit sRGB through a 4096-entry table (the curve's steepest step near 0 is below
+// half a level at this spacing).
+std::uint8_t srgbByte(float v) {
+    static const std::vector<std::uint8_t> table = [] {
+        std::vector<std::uint8_t> t(4097);
+        for (int i = 0; i <= 4096; ++i)
+            t[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(
+                std::lround(linearToSrgb(static_cast<float>(i) / 4096.0f) * 255.0f));
+        return t;
+    }();
+    const float x = std::clamp(v, 0.0f, 1.0f) * 4096.0f;
+    return table[static_cast<std::size_t>(x + 0.5f)];
+}
+
 glm::u8vec4 toTexel(const glm::vec4& c) {
-    auto byte = [](float v) {
-        return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-    };
-    return {byte(linearToSrgb(c.r)), byte(linearToSrgb(c.g)), byte(linearToSrgb(c.b)), 255};
+    return {srgbByte(c.r), srgbByte(c.g), srgbByte(c.b), 255};
 }
 
 } // namespace

@@ -16,20 +16,6 @@ float boxDistanceSquared(const glm::vec3& p, const glm::vec3& lo, const glm::vec
     return glm::dot(d, d);
 }
 
-bool segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin, float tMax,
-                    const glm::vec3& lo, const glm::vec3& hi) {
-    for (int a = 0; a < 3; ++a) {
-        float t0 = (lo[a] - o[a]) * invDir[a];
-        float t1 = (hi[a] - o[a]) * invDir[a];
-        if (t0 > t1) std::swap(t0, t1);
-        // NaN (0 * inf on a slab plane) leaves the bounds as they are.
-        if (t0 > tMin) tMin = t0;
-        if (t1 < tMax) tMax = t1;
-        if (tMin > tMax) return false;
-    }
-    return true;
-}
-
 // Ericson 5.1.5: the point of triangle abc closest to p, as barycentric weights.
 glm::vec3 closestBary(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
                       const glm::vec3& c) {
@@ -79,6 +65,71 @@ SurfaceBvh::SurfaceBvh(std::span<const glm::vec3> positions, std::span<const std
     build(0, n, centroids, 0);
 }
 
+// Binned surface area heuristic (Wald 2007): 16 bins of the centroids along `axis`, the split
+// with the least sum of box area x triangle count; the median when no bin split separates.
+std::uint32_t SurfaceBvh::sahSplit(std::uint32_t begin, std::uint32_t end,
+                                   const std::vector<glm::vec3>& centroids, int axis, float lo,
+                                   float extent) {
+    constexpr int kBins = 16;
+    struct Bin {
+        glm::vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+        std::uint32_t count = 0;
+    } bins[kBins];
+    auto binOf = [&](std::uint32_t t) {
+        const int b = static_cast<int>((centroids[t][axis] - lo) / extent * kBins);
+        return std::clamp(b, 0, kBins - 1);
+    };
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const std::uint32_t t = order_[i];
+        Bin& b = bins[binOf(t)];
+        ++b.count;
+        for (int k = 0; k < 3; ++k) {
+            b.lo = glm::min(b.lo, corner(t, k));
+            b.hi = glm::max(b.hi, corner(t, k));
+        }
+    }
+    auto area = [](const glm::vec3& a, const glm::vec3& b) {
+        const glm::vec3 d = glm::max(b - a, glm::vec3(0.0f));
+        return d.x * d.y + d.y * d.z + d.z * d.x;
+    };
+    float rightCost[kBins] = {};
+    glm::vec3 rlo(std::numeric_limits<float>::max()), rhi(-std::numeric_limits<float>::max());
+    std::uint32_t rcount = 0;
+    for (int b = kBins - 1; b > 0; --b) {
+        rlo = glm::min(rlo, bins[b].lo);
+        rhi = glm::max(rhi, bins[b].hi);
+        rcount += bins[b].count;
+        rightCost[b] = rcount ? area(rlo, rhi) * static_cast<float>(rcount) : 0.0f;
+    }
+    glm::vec3 llo(std::numeric_limits<float>::max()), lhi(-std::numeric_limits<float>::max());
+    std::uint32_t lcount = 0;
+    float bestCost = std::numeric_limits<float>::max();
+    int bestBin = -1;
+    for (int b = 1; b < kBins; ++b) {
+        llo = glm::min(llo, bins[b - 1].lo);
+        lhi = glm::max(lhi, bins[b - 1].hi);
+        lcount += bins[b - 1].count;
+        if (lcount == 0 || lcount == end - begin) continue;
+        const float cost = area(llo, lhi) * static_cast<float>(lcount) + rightCost[b];
+        if (cost < bestCost) {
+            bestCost = cost;
+            bestBin = b;
+        }
+    }
+    if (bestBin < 0) {
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             const float ca = centroids[a][axis], cb = centroids[b][axis];
+                             return ca < cb || (ca == cb && a < b);
+                         });
+        return mid;
+    }
+    const auto split = std::stable_partition(order_.begin() + begin, order_.begin() + end,
+                                             [&](std::uint32_t t) { return binOf(t) < bestBin; });
+    return static_cast<std::uint32_t>(split - order_.begin());
+}
+
 std::uint32_t SurfaceBvh::build(std::uint32_t begin, std::uint32_t end,
                                 const std::vector<glm::vec3>& centroids, int depth) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
@@ -103,13 +154,7 @@ std::uint32_t SurfaceBvh::build(std::uint32_t begin, std::uint32_t end,
         return index;
     }
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
-    const std::uint32_t mid = begin + (end - begin) / 2;
-    // Ties broken by triangle id: the split is a pure function of the input.
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                         const float ca = centroids[a][axis], cb = centroids[b][axis];
-                         return ca < cb || (ca == cb && a < b);
-                     });
+    const std::uint32_t mid = sahSplit(begin, end, centroids, axis, clo[axis], extent[axis]);
     build(begin, mid, centroids, depth + 1);
     const std::uint32_t right = build(mid, end, centroids, depth + 1);
     nodes_[index].first = right;
@@ -117,42 +162,38 @@ std::uint32_t SurfaceBvh::build(std::uint32_t begin, std::uint32_t end,
     return index;
 }
 
-void SurfaceBvh::forEachHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax,
-                            const std::function<void(const SegmentHit&)>& visit) const {
-    if (nodes_.empty()) return;
-    const glm::vec3 invDir(1.0f / dir.x, 1.0f / dir.y, 1.0f / dir.z);
-    std::uint32_t stack[128];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const Node& node = nodes_[stack[--top]];
-        if (!segmentHitsBox(origin, invDir, tMin, tMax, node.lo, node.hi)) continue;
-        if (node.count == 0) {
-            const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-            if (top + 2 > 128) continue; // cannot happen at depth <= 60
-            stack[top++] = node.first;
-            stack[top++] = self + 1;
-            continue;
-        }
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-            const std::uint32_t t = order_[i];
-            // Moeller-Trumbore, both faces.
-            const glm::vec3 a = corner(t, 0), e1 = corner(t, 1) - a, e2 = corner(t, 2) - a;
-            const glm::vec3 pv = glm::cross(dir, e2);
-            const float det = glm::dot(e1, pv);
-            if (!(std::abs(det) > 1e-20f)) continue;
-            const float inv = 1.0f / det;
-            const glm::vec3 tv = origin - a;
-            const float u = glm::dot(tv, pv) * inv;
-            if (u < 0.0f || u > 1.0f) continue;
-            const glm::vec3 qv = glm::cross(tv, e1);
-            const float v = glm::dot(dir, qv) * inv;
-            if (v < 0.0f || u + v > 1.0f) continue;
-            const float hitT = glm::dot(e2, qv) * inv;
-            if (hitT < tMin || hitT > tMax) continue;
-            visit(SegmentHit{t, hitT, {u, v}});
-        }
+bool SurfaceBvh::segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin, float tMax,
+                    const glm::vec3& lo, const glm::vec3& hi) {
+    for (int a = 0; a < 3; ++a) {
+        float t0 = (lo[a] - o[a]) * invDir[a];
+        float t1 = (hi[a] - o[a]) * invDir[a];
+        if (t0 > t1) std::swap(t0, t1);
+        // NaN (0 * inf on a slab plane) leaves the bounds as they are.
+        if (t0 > tMin) tMin = t0;
+        if (t1 < tMax) tMax = t1;
+        if (tMin > tMax) return false;
     }
+    return true;
+}
+
+bool SurfaceBvh::hitTriangle(std::uint32_t t, const glm::vec3& origin, const glm::vec3& dir,
+                             float tMin, float tMax, SegmentHit& hit) const {
+    // Moeller-Trumbore, both faces.
+    const glm::vec3 a = corner(t, 0), e1 = corner(t, 1) - a, e2 = corner(t, 2) - a;
+    const glm::vec3 pv = glm::cross(dir, e2);
+    const float det = glm::dot(e1, pv);
+    if (!(std::abs(det) > 1e-20f)) return false;
+    const float inv = 1.0f / det;
+    const glm::vec3 tv = origin - a;
+    const float u = glm::dot(tv, pv) * inv;
+    if (u < 0.0f || u > 1.0f) return false;
+    const glm::vec3 qv = glm::cross(tv, e1);
+    const float v = glm::dot(dir, qv) * inv;
+    if (v < 0.0f || u + v > 1.0f) return false;
+    const float hitT = glm::dot(e2, qv) * inv;
+    if (hitT < tMin || hitT > tMax) return false;
+    hit = SegmentHit{t, hitT, {u, v}};
+    return true;
 }
 
 ClosestPoint SurfaceBvh::closest(const glm::vec3& p) const {

@@ -54,19 +54,26 @@ TextureMips::Pyramid& TextureMips::pyramidOf(const RgbaImage& image) {
     return *pyramid;
 }
 
-glm::vec4 TextureMips::sample(const RgbaImage& image, glm::vec2 uv, float footprint) {
-    if (image.empty()) return glm::vec4(1.0f);
-    if (!(footprint > 1.0f)) return sampleBilinear(image, uv);
+MipLevels TextureMips::levelsOf(const RgbaImage& image) {
+    MipLevels out;
+    out.levels.push_back(&image);
+    if (image.width <= 1 && image.height <= 1) return out;
     const Pyramid& pyramid = pyramidOf(image);
-    const float lod = std::min(std::log2(footprint), static_cast<float>(pyramid.levels.size()));
+    for (const RgbaImage& level : pyramid.levels)
+        out.levels.push_back(&level);
+    return out;
+}
+
+glm::vec4 MipLevels::sample(glm::vec2 uv, float footprint) const {
+    if (levels.empty() || levels[0]->empty()) return glm::vec4(1.0f);
+    const int last = static_cast<int>(levels.size()) - 1;
+    if (!(footprint > 1.0f) || last == 0) return sampleBilinear(*levels[0], uv);
+    const float lod = std::min(std::log2(footprint), static_cast<float>(last));
     const int l0 = static_cast<int>(std::floor(lod));
     const float t = lod - static_cast<float>(l0);
-    auto level = [&](int l) -> const RgbaImage& {
-        return l == 0 ? image : pyramid.levels[static_cast<std::size_t>(l - 1)];
-    };
-    const glm::vec4 a = sampleBilinear(level(l0), uv);
-    if (t <= 0.0f || l0 + 1 > static_cast<int>(pyramid.levels.size())) return a;
-    return glm::mix(a, sampleBilinear(level(l0 + 1), uv), t);
+    const glm::vec4 a = sampleBilinear(*levels[static_cast<std::size_t>(l0)], uv);
+    if (t <= 0.0f || l0 >= last) return a;
+    return glm::mix(a, sampleBilinear(*levels[static_cast<std::size_t>(l0 + 1)], uv), t);
 }
 
 } // namespace hlod

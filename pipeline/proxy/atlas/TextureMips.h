@@ -19,11 +19,23 @@
 
 namespace hlod {
 
-class TextureMips {
-public:
+// The levels of one texture: [0] is the image itself, then halves down to 1x1.
+struct MipLevels {
+    std::vector<const RgbaImage*> levels;
     // Linear RGBA at `uv` (repeat wrap) for a footprint of `footprint` texels of level 0
     // (<= 1: plain bilinear at level 0).
-    glm::vec4 sample(const RgbaImage& image, glm::vec2 uv, float footprint);
+    glm::vec4 sample(glm::vec2 uv, float footprint) const;
+};
+
+class TextureMips {
+public:
+    // The pyramid of `image`, built on first use (look it up once, sample it many times: the
+    // lookup takes a lock).
+    MipLevels levelsOf(const RgbaImage& image);
+
+    glm::vec4 sample(const RgbaImage& image, glm::vec2 uv, float footprint) {
+        return levelsOf(image).sample(uv, footprint);
+    }
 
 private:
     struct Pyramid {

@@ -134,7 +134,9 @@ TEST(BakeAtlas, BoxAtlasAndItsMipsShowNoBackgroundAtSeams) {
     sources.colors.assign(8, glm::vec4(1.0f));
     sources.triangleMaterial.assign(12, 0);
     TextureMips mips;
-    const ProxyMesh baked = bakeAtlas(box, sources, 0.01, 1.0 / 16.0, {}, mips);
+    AtlasOptions options;
+    options.skipUntextured = false;
+    const ProxyMesh baked = bakeAtlas(box, sources, 0.01, 1.0 / 16.0, options, mips);
     ASSERT_TRUE(baked.hasAtlas());
     RgbaImage level = *baked.atlas->image;
     int levels = 0;
@@ -150,6 +152,16 @@ TEST(BakeAtlas, BoxAtlasAndItsMipsShowNoBackgroundAtSeams) {
         ++levels;
     }
     EXPECT_GE(levels, 3);
+}
+
+TEST(BakeAtlas, UntexturedSourcesKeepTheVertexColours) {
+    SourceSurfaces sources;
+    sources.materials.push_back({glm::vec4(1, 0, 0, 1), nullptr, AlphaMode::Opaque, 0.5f});
+    addQuad(sources, 0.0f, 0);
+    TextureMips mips;
+    const ProxyMesh baked = bakeAtlas(proxyQuad(1.0f, 0.0f), sources, 0.05, 1.0 / 32.0, {}, mips);
+    EXPECT_FALSE(baked.hasAtlas());
+    EXPECT_EQ(baked.vertexCount(), 4u);
 }
 
 TEST(BakeAtlas, BytesDoNotDependOnTheThreadCount) {
