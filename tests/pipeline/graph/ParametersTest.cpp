@@ -23,7 +23,8 @@ TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
         "--volume",      "--k",           "--max-children", "--proxy",
         "--screen-size", "--pixel-error", "--fov",          "--viewport-height",
         "--threads",     "--cache",       "--no-cache",     "--no-dlod",
-        "--deflection",  "--brep-unit",   "--geo",          "-o"};
+        "--deflection",  "--brep-unit",   "--geo",          "-o",
+        "--proxy-textures"};
     std::set<std::string> keys, declared;
     for (const ParamDecl& d : parameterDeclarations()) {
         EXPECT_TRUE(keys.insert(d.key).second) << d.key << " declared twice";
