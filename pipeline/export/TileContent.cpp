@@ -109,8 +109,15 @@ TileStats writeProxyContent(const std::filesystem::path& file, const ProxyMesh& 
     glb.translation = proxy.origin;
     glb.positions = proxy.positions;
     glb.normals = proxy.normals;
-    glb.colors = proxy.colors;
     glb.indices = proxy.indices;
+    if (proxy.hasAtlas()) { // the atlas carries the whole base colour (ProxyMesh.h)
+        glb.uvs = proxy.uvs;
+        glb.image = proxy.atlas->encoded;
+        glb.imageMimeType = proxy.atlas->mimeType;
+        glb.alphaMask = proxy.atlas->mask;
+    } else {
+        glb.colors = proxy.colors;
+    }
     writeGlbFile(file, glb);
     return stats(file, proxy.triangleCount(), proxy.vertexCount());
 }

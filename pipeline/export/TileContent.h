@@ -1,6 +1,7 @@
 // The glTF content of one tile: a leaf's original mesh instance (baked into world space
 // relative to its own centre, material base colour and base colour texture kept) or an inner
-// node's proxy (vertex colours).
+// node's proxy (its baked atlas embedded as the base colour texture, MASK when it has a
+// cut-out; vertex colours when it has none).
 // Textures: a leaf with uvs whose material has a readable texture file references it; the
 // image is written once per package under tiles/textures/ (PNG/JPEG as is, other formats
 // re-encoded as PNG, TextureImage.h) and shared by every tile that uses it. Without uvs, or

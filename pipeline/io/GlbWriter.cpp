@@ -110,7 +110,12 @@ nlohmann::json material(nlohmann::json& gltf, Layout& layout, const GlbMesh& m) 
         pbr["baseColorTexture"] = {{"index", 0}};
     }
     nlohmann::json mat = {{"name", m.name}, {"pbrMetallicRoughness", pbr}};
-    if (c.a < 1.0f) mat["alphaMode"] = "BLEND";
+    if (m.alphaMask) {
+        mat["alphaMode"] = "MASK";
+        mat["alphaCutoff"] = m.alphaCutoff;
+    } else if (c.a < 1.0f) {
+        mat["alphaMode"] = "BLEND";
+    }
     return mat;
 }
 

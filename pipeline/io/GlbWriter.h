@@ -1,7 +1,7 @@
 // Minimal glTF 2.0 binary (GLB) writer for one triangle mesh: positions, optional normals,
 // texture coordinates and vertex colours (COLOR_0 as normalised unsigned bytes, linear), one
 // PBR material (base colour factor and optional embedded base colour texture, metallic 0,
-// roughness 1; alpha below 1 makes it BLEND), one node carrying the mesh's
+// roughness 1; alpha below 1 makes it BLEND, alphaMask MASK), one node carrying the mesh's
 // translation in double precision (so world-space proxies far from the origin stay exact).
 // Follows the Khronos glTF 2.0 specification, section 4.4 (GLB container) and 5 (JSON
 // schema): little-endian chunks padded to 4 bytes, POSITION min/max present, index type the
@@ -40,6 +40,10 @@ struct GlbMesh {
     // Or a texture file shared by several GLBs: a relative URI (no "..", no scheme) resolved
     // against the GLB's folder. Used when `image` is empty; also ignored without uvs.
     std::string imageUri;
+    // glTF alphaMode MASK with this cut-off (textured cut-outs, e.g. a proxy atlas with
+    // alpha); otherwise OPAQUE, or BLEND when baseColor.a < 1.
+    bool alphaMask = false;
+    float alphaCutoff = 0.5f;
 };
 
 std::vector<std::uint8_t> encodeGlb(const GlbMesh& mesh);
