@@ -1,5 +1,6 @@
 // `hlod bench [SCENE...] --out DIR [--frames N] [--size WxH] [--configs LIST]
-// [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]`:
+// [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]
+// [--proxy-textures on|off]`:
 // the thesis' evaluation on one scene (see bench/BenchRun.h for what is measured and how).
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
 // side_by_side_*.png. Needs an X display (xvfb-run -a on a headless machine).
@@ -72,7 +73,8 @@ void parseSize(const std::string& text, int& w, int& h) {
 int runBench(const CommandArgs& argv) {
     std::set<std::string> valueOptions{"--out",     "-o",        "--frames",
                                        "--size",    "--configs", "--path",
-                                       "--threads", "--shading", "--screen-size"};
+                                       "--threads", "--shading", "--screen-size",
+                                       "--proxy-textures"};
     valueOptions.insert(kImportOptions.begin(), kImportOptions.end());
     const Args args(argv, valueOptions, {"--no-cache"});
 #ifndef HLOD_HAVE_VTK
@@ -101,6 +103,11 @@ int runBench(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument,
                     "--shading must be geometry, colour or textured, not '" + shading + "'");
     if (!args.has("--no-cache")) o.cacheDir = benchCacheDir();
+    const std::string textures = args.value("--proxy-textures", "on");
+    if (textures != "on" && textures != "off")
+        throw Error(ErrorCode::InvalidArgument,
+                    "--proxy-textures must be on or off, not '" + textures + "'");
+    o.proxyTextures = textures == "on";
     if (const char* d = std::getenv("DISPLAY"); !d || !*d)
         throw Error(ErrorCode::InvalidArgument,
                     "bench renders with VTK, which needs an X display here (Debian's VTK has no "

@@ -125,6 +125,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     bake.screen.screenSize = o.screenSize;
     bake.threads = o.threads;
     bake.cacheDir = o.cacheDir;
+    bake.atlas.enabled = o.proxyTextures;
     for (Config& c : configs) {
         if (c.kind != Kind::Hlod) continue;
         HlodSettings settings;
@@ -378,6 +379,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     extra["shading"] = o.shading == Shading::Geometry ? "geometry"
                        : o.shading == Shading::Colour ? "colour"
                                                       : "textured";
+    extra["proxy_textures"] = o.proxyTextures;
     extra["psnr_cap_db"] = kPsnrCapDb;
     extra["camera_path"] = o.pathFile ? o.pathFile->string() : std::string("automatic");
     extra["statistics"] = nlohmann::json::array();

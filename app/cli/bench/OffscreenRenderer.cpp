@@ -251,10 +251,19 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
 
 int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
     const bool colour = impl_->shading != Shading::Geometry;
+    const bool atlas = impl_->shading == Shading::Textured && proxy.hasAtlas();
+    // With an atlas the texture carries the whole base colour (ProxyMesh.h).
     auto poly = makePoly(proxy.positions, proxy.normals, proxy.indices, nullptr,
-                         colour ? &proxy.colors : nullptr);
-    auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !proxy.colors.empty());
-    if (impl_->shading == Shading::Textured) applyAlphaMode(*actor, AlphaMode::Opaque, 0.5f);
+                         colour && !atlas ? &proxy.colors : nullptr, atlas ? &proxy.uvs : nullptr);
+    auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !atlas && !proxy.colors.empty());
+    if (atlas) {
+        SurfaceLook look;
+        look.texture = proxy.atlas->image.get();
+        look.alphaMode = proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque;
+        impl_->applyLook(*actor, look, true);
+    } else if (impl_->shading == Shading::Textured) {
+        applyAlphaMode(*actor, AlphaMode::Opaque, 0.5f);
+    }
     actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];

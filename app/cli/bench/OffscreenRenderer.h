@@ -51,7 +51,8 @@ public:
     // uses the same Mesh object.
     int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color,
                 const SurfaceLook& look = {});
-    // A proxy: its vertex colours in Colour and Textured shading.
+    // A proxy: its vertex colours in Colour shading; its baked atlas in Textured shading
+    // (vertex colours when it has none). The atlas image must outlive the renderer.
     int addProxy(int layer, const ProxyMesh& proxy);
 
     // Makes exactly `drawables` of `layer` visible (indices returned by add*).
