@@ -47,7 +47,8 @@ vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std:
 // `depths` non-null: tint each drawn node by its depth (StudioModel::depths()).
 vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
                                          const std::vector<Id>& drawList,
-                                         const std::vector<int>* depths);
+                                         const std::vector<int>* depths,
+                                         bool leaveOutTextured = false);
 
 vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
                                                 const std::vector<Id>& instances);

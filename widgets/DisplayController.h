@@ -7,7 +7,9 @@
 // runs for the viewport's camera (its FrontCache: only the change since the last frame is
 // walked); when the draw list changed the preview geometry is rebuilt, so the view shows
 // exactly what an engine would draw for this camera: proxies of drawn inner nodes, original
-// meshes of drawn leaves. Every frame's counters go out through frameStats().
+// meshes of drawn leaves. Every frame's counters go out through frameStats(). Proxies with a
+// baked atlas and leaves with textures are drawn textured (TexturedPreview.h) unless the depth
+// tint is on.
 // Picking: a click selects the instance (original scene, clusters) or the cluster node (HLOD
 // preview; a drawn leaf selects its instance) under the cursor; a click on nothing clears it.
 // The controller owns VTK props only; all state it shows comes from the model.
@@ -32,6 +34,7 @@ class vtkTextActor;
 namespace hlod::widgets {
 
 class ClusterColoring;
+class TexturedPreview;
 class StudioModel;
 class Viewport;
 
@@ -83,6 +86,7 @@ private:
     vtkSmartPointer<vtkActor> highlightActor_;
     vtkSmartPointer<vtkTextActor> overlay_;
     std::unique_ptr<ClusterColoring> coloring_;
+    std::unique_ptr<TexturedPreview> textured_; // atlas proxies and textured leaves
     const void* coloringFor_ = nullptr; // the build the colouring was made for
     std::vector<Id> cut_;
     std::vector<Id> drawList_;
