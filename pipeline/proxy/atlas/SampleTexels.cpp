@@ -46,6 +46,10 @@ struct SourceLookup {
         return out;
     }
 
+    bool masked(std::uint32_t t) const {
+        return s.materials[s.triangleMaterial[t]].alphaMode == AlphaMode::Mask;
+    }
+
     bool cutOut(std::uint32_t t, const glm::vec4& c) const {
         const SourceMaterial& mat = s.materials[s.triangleMaterial[t]];
         return mat.alphaMode == AlphaMode::Mask && c.a < mat.alphaCutoff;
@@ -97,32 +101,40 @@ void sampleTexels(const ProxySurface& proxy, const TexelCoverage& coverage,
                                proxy.positions[ic] - proxy.positions[ia]);
             const float len = glm::length(n);
             n = len > 0.0f ? n / len : glm::vec3(0, 0, 1);
+            // Nearest hit that is not cut out; colours are evaluated only for cut-out tests
+            // and once for the winner.
             std::uint32_t best = 0xffffffffu;
             float bestT = std::numeric_limits<float>::infinity();
-            glm::vec4 bestColour(0.0f);
+            glm::vec3 bestWeights(0.0f);
             bool crossedCutOut = false;
             bvh.forEachHit(p, n, -reach, reach, [&](const SegmentHit& hit) {
                 const float d = std::abs(hit.t);
                 if (d > bestT || (d == bestT && hit.triangle > best)) return;
                 const glm::vec3 wts(1.0f - hit.bary.x - hit.bary.y, hit.bary.x, hit.bary.y);
-                const glm::vec4 c = lookup.colour(hit.triangle, wts, texelSize);
-                if (lookup.cutOut(hit.triangle, c)) {
+                if (lookup.masked(hit.triangle) &&
+                    lookup.cutOut(hit.triangle, lookup.colour(hit.triangle, wts, texelSize))) {
                     crossedCutOut = true;
                     return;
                 }
                 best = hit.triangle;
                 bestT = d;
-                bestColour = c;
+                bestWeights = wts;
             });
             if (best == 0xffffffffu && !crossedCutOut) {
-                const ClosestPoint cp = bvh.closest(p);
+                // Nothing along the normal: the closest surface point, searched within a few
+                // budgets only (farther, the texel is left to the dilation).
+                const ClosestPoint cp = bvh.closest(p, 16.0f * reach * reach);
                 if (cp.triangle != 0xffffffffu) {
-                    const glm::vec4 c = lookup.colour(cp.triangle, cp.bary, texelSize);
-                    if (lookup.cutOut(cp.triangle, c)) crossedCutOut = true;
-                    else {
-                        best = cp.triangle;
-                        bestColour = c;
-                    }
+                    best = cp.triangle;
+                    bestWeights = cp.bary;
+                }
+            }
+            glm::vec4 bestColour(0.0f);
+            if (best != 0xffffffffu) {
+                bestColour = lookup.colour(best, bestWeights, texelSize);
+                if (lookup.cutOut(best, bestColour)) {
+                    crossedCutOut = true;
+                    best = 0xffffffffu;
                 }
             }
             if (best == 0xffffffffu) {

@@ -9,7 +9,8 @@
 // colour is the glTF base colour there: factor x texture (trilinear, footprint = the atlas
 // texel) x vertex colour. Hits on cut-out (MASK) texels below their cut-off are passed
 // through; a segment that only crossed cut-out texels marks the texel CutOut. A segment that
-// hits nothing takes the closest source point instead (its cut-out test applies too).
+// hits nothing takes the closest source point within 4 x reach instead (its cut-out test
+// applies too); a texel with no source that near stays Empty and is dilated.
 // Parallel over texel rows, each texel written by one task: deterministic for any thread count.
 #pragma once
 

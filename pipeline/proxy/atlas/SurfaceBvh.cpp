@@ -196,9 +196,9 @@ bool SurfaceBvh::hitTriangle(std::uint32_t t, const glm::vec3& origin, const glm
     return true;
 }
 
-ClosestPoint SurfaceBvh::closest(const glm::vec3& p) const {
+ClosestPoint SurfaceBvh::closest(const glm::vec3& p, float maxDistanceSquared) const {
     ClosestPoint best;
-    best.distanceSquared = std::numeric_limits<float>::infinity();
+    best.distanceSquared = maxDistanceSquared;
     if (nodes_.empty()) return best;
     std::uint32_t stack[128];
     int top = 0;
@@ -229,7 +229,8 @@ ClosestPoint SurfaceBvh::closest(const glm::vec3& p) const {
             const glm::vec3 w = closestBary(p, a, b, c);
             const glm::vec3 q = w.x * a + w.y * b + w.z * c;
             const float d = glm::dot(q - p, q - p);
-            if (d < best.distanceSquared || (d == best.distanceSquared && t < best.triangle)) {
+            if (d < best.distanceSquared ||
+                (d == best.distanceSquared && best.triangle != 0xffffffffu && t < best.triangle)) {
                 best.triangle = t;
                 best.distanceSquared = d;
                 best.bary = w;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -43,7 +44,9 @@ public:
     void forEachHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax,
                     Visit&& visit) const;
 
-    ClosestPoint closest(const glm::vec3& p) const;
+    // The closest surface point within sqrt(maxDistanceSquared) of `p` (none beyond it).
+    ClosestPoint closest(const glm::vec3& p,
+                         float maxDistanceSquared = std::numeric_limits<float>::infinity()) const;
 
     bool empty() const { return nodes_.empty(); }
 

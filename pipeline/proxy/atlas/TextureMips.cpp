@@ -68,12 +68,11 @@ glm::vec4 MipLevels::sample(glm::vec2 uv, float footprint) const {
     if (levels.empty() || levels[0]->empty()) return glm::vec4(1.0f);
     const int last = static_cast<int>(levels.size()) - 1;
     if (!(footprint > 1.0f) || last == 0) return sampleBilinear(*levels[0], uv);
+    // The level whose texels match the footprint best (GL_LINEAR_MIPMAP_NEAREST): half the
+    // cost of blending two, and the bake's texel already averages over its footprint.
     const float lod = std::min(std::log2(footprint), static_cast<float>(last));
-    const int l0 = static_cast<int>(std::floor(lod));
-    const float t = lod - static_cast<float>(l0);
-    const glm::vec4 a = sampleBilinear(*levels[static_cast<std::size_t>(l0)], uv);
-    if (t <= 0.0f || l0 >= last) return a;
-    return glm::mix(a, sampleBilinear(*levels[static_cast<std::size_t>(l0 + 1)], uv), t);
+    const auto level = static_cast<std::size_t>(std::lround(lod));
+    return sampleBilinear(*levels[level], uv);
 }
 
 } // namespace hlod

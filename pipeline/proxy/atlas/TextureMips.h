@@ -1,9 +1,10 @@
 // Filtered texture lookups for the atlas bake: a texel of the atlas covers many texels of a
 // finely tiled source texture (a race track's grass repeats every few metres, an atlas texel
 // at a high node is metres wide), so sampling the source at one point would alias. Like a GPU,
-// the lookup picks mip levels by the footprint and blends two (trilinear filtering, OpenGL 4.6
-// section 8.14); the pyramid is built with a 2x2 box filter in linear space (odd sizes: the
-// last row/column is folded into its neighbour) and stored as 8-bit sRGB.
+// the lookup picks the mip level whose texels match the footprint and filters it bilinearly
+// (GL_LINEAR_MIPMAP_NEAREST, OpenGL 4.6 section 8.14); the pyramid is built with a 2x2 box
+// filter in linear space (odd sizes: the last row/column is folded into its neighbour) and
+// stored as 8-bit sRGB.
 //
 // Thread-safe: a texture's pyramid is built once, on first use, under a per-texture lock;
 // lookups are const afterwards. Deterministic: the pyramid is a pure function of the image.
