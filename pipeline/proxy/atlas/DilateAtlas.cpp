@@ -87,12 +87,19 @@ void spread(RgbaImage& image, std::vector<std::uint8_t> known, int first, int co
 
 void dilateAtlas(RgbaImage& image, const std::vector<TexelState>& state, int passes) {
     std::vector<std::uint8_t> colourKnown(state.size()), alphaKnown(state.size());
+    bool cutOut = false;
     for (std::size_t i = 0; i < state.size(); ++i) {
         colourKnown[i] = state[i] == TexelState::Opaque;
         alphaKnown[i] = state[i] != TexelState::Empty;
+        cutOut = cutOut || state[i] == TexelState::CutOut;
     }
     spread(image, std::move(colourKnown), 0, 3, passes);
-    spread(image, std::move(alphaKnown), 3, 1, passes);
+    if (cutOut) {
+        spread(image, std::move(alphaKnown), 3, 1, passes);
+    } else { // every covered texel is opaque: so is everything
+        for (std::size_t i = 3; i < image.pixels.size(); i += 4)
+            image.pixels[i] = 255;
+    }
 }
 
 } // namespace hlod
