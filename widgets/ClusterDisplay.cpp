@@ -1,5 +1,6 @@
 // VTK data for the Clusters and HLOD preview modes (see ClusterDisplay.h).
 #include "widgets/ClusterDisplay.h"
+#include "widgets/TexturedPreview.h"
 
 #include <algorithm>
 #include <array>
@@ -144,11 +145,12 @@ vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std:
 
 vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
                                          const std::vector<Id>& drawList,
-                                         const std::vector<int>* depths) {
+                                         const std::vector<int>* depths, bool leaveOutTextured) {
     MergedGeometry geometry(kNodeIdArray);
     const ClusterTree& tree = build.tree;
     for (Id n : drawList) {
         if (n >= tree.nodes.size()) continue;
+        if (leaveOutTextured && TexturedPreview::draws(scene, build, n)) continue;
         std::optional<glm::vec3> tint;
         if (depths && n < depths->size()) tint = depthColor((*depths)[n]);
         const ClusterNode& node = tree.nodes[n];

@@ -56,7 +56,8 @@ glm::vec3 highlightColor();
 // `depths` non-null: tint each drawn node by its depth (StudioModel::depths()).
 vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
                                          const std::vector<Id>& drawList,
-                                         const std::vector<int>* depths);
+                                         const std::vector<int>* depths,
+                                         bool leaveOutTextured = false);
 
 vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
                                                 const std::vector<Id>& instances);

@@ -1,5 +1,6 @@
 // Display modes, highlight, overlay and picking in the viewport (see DisplayController.h).
 #include "widgets/DisplayController.h"
+#include "widgets/TexturedPreview.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,7 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     overlay_->SetPosition(0.012, 0.975);
     overlay_->PickableOff();
     vtkRenderer* renderer = viewport_->renderer();
+    textured_ = std::make_unique<TexturedPreview>(renderer);
     for (vtkProp* prop :
          {static_cast<vtkProp*>(clusterActor_), static_cast<vtkProp*>(previewActor_),
           static_cast<vtkProp*>(boundsActor_), static_cast<vtkProp*>(highlightActor_),
@@ -135,6 +137,7 @@ void DisplayController::refresh() {
     boundsActor_->SetVisibility(mode == DisplayMode::Clusters &&
                                 model_->view().bounds != BoundsShape::None);
     previewActor_->SetVisibility(mode == DisplayMode::Hlod);
+    if (mode != DisplayMode::Hlod) textured_->hide();
     if (mode == DisplayMode::Clusters) refreshClusters();
     if (mode == DisplayMode::Hlod) previewDirty_ = true;
     if (!built) {
@@ -331,8 +334,10 @@ void DisplayController::updatePreview() {
     if (previewDirty_ || result.drawList != drawList_) {
         drawList_ = result.drawList;
         const std::vector<int>* depths = model_->view().tintByDepth ? &model_->depths() : nullptr;
+        const bool textured = depths == nullptr;
         previewActor_->GetMapper()->SetInputDataObject(
-            hlodPreview(*built.scene, *built.build, drawList_, depths));
+            hlodPreview(*built.scene, *built.build, drawList_, depths, textured));
+        textured_->show(*built.scene, *built.build, drawList_, textured);
         previewDirty_ = false;
         refreshHighlight(); // lit as drawn: follows the draw list
         updateLegend();
@@ -361,6 +366,14 @@ void DisplayController::pickAt(const QPoint& pos) {
         return;
     }
     auto* actor = vtkActor::SafeDownCast(hit.prop);
+    if (const Id node = textured_->nodeOf(actor); node != kNoId) {
+        const BuiltHlod& built = model_->built();
+        if (built.build->tree.nodes[node].isLeaf())
+            model_->selectInstance(built.build->tree.nodes[node].instance);
+        else
+            model_->selectClusterNode(node);
+        return;
+    }
     if (actor == previewActor_.Get()) {
         const Id node = cellId(actor, kNodeIdArray, hit.cell);
         const BuiltHlod& built = model_->built();

@@ -7,7 +7,9 @@
 // runs for the viewport's camera (its FrontCache: only the change since the last frame is
 // walked); when the draw list changed the preview geometry is rebuilt, so the view shows
 // exactly what an engine would draw for this camera: proxies of drawn inner nodes, original
-// meshes of drawn leaves. Every frame's counters go out through frameStats().
+// meshes of drawn leaves. Every frame's counters go out through frameStats(). Proxies with a
+// baked atlas and leaves with textures are drawn textured (TexturedPreview.h) unless the depth
+// tint is on.
 // Legend (issue 20 #6): in Clusters mode the shown level's clusters with their colours (the
 // largest first) and the selection's colour; in the HLOD preview tinted by depth, the colour of
 // every depth drawn; hidden otherwise (ViewportLegend.h).
@@ -40,6 +42,7 @@ class vtkTextActor;
 namespace hlod::widgets {
 
 class ClusterColoring;
+class TexturedPreview;
 class StudioModel;
 class Viewport;
 
@@ -95,6 +98,7 @@ private:
     vtkSmartPointer<vtkTextActor> overlay_;
     ViewportLegend legend_;
     std::unique_ptr<ClusterColoring> coloring_;
+    std::unique_ptr<TexturedPreview> textured_; // atlas proxies and textured leaves
     const void* coloringFor_ = nullptr; // the build the colouring was made for
     std::vector<Id> cut_;
     std::vector<Id> drawList_;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -18,6 +20,7 @@
 #include <vtkUnsignedIntArray.h>
 
 #include "pipeline/io/Import.h"
+#include "widgets/VtkSurfaceLook.h"
 
 namespace hlod::widgets {
 
@@ -41,7 +44,9 @@ struct PolyBuilder {
     vtkNew<vtkIdTypeArray> offsets;
     vtkNew<vtkIdTypeArray> connectivity;
     vtkNew<vtkUnsignedIntArray> instanceIds;
+    vtkNew<vtkFloatArray> uvs;
     bool withColors = false;
+    bool withUvs = false;
     int colorComponents = 3; // 4 carries the material's opacity per vertex
     bool withInstanceIds = false;
     vtkIdType vertexCount = 0;
@@ -64,11 +69,18 @@ struct PolyBuilder {
             instanceIds->SetName(SceneActors::kInstanceIdArray);
             instanceIds->SetNumberOfTuples(triangles);
         }
+        if (withUvs) {
+            uvs->SetName("TCoords");
+            uvs->SetNumberOfComponents(2);
+            uvs->SetNumberOfTuples(vertices);
+        }
     }
 
     // Appends `mesh` transformed by `world` (identity for per-mesh data). `fallback` colours the
-    // vertices of meshes without vertex colours when the builder stores colours.
-    void append(const Mesh& mesh, const glm::dmat4& world, const glm::vec4& fallback, Id instance) {
+    // vertices of meshes without vertex colours when the builder stores colours; `tint`
+    // (linear) multiplies vertex colours (textured parts: the base colour factor).
+    void append(const Mesh& mesh, const glm::dmat4& world, const glm::vec4& fallback, Id instance,
+                const glm::vec4& tint = glm::vec4(1.0f)) {
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         float* p = points->GetPointer(vertexCount * 3);
         float* n = normals->GetPointer(vertexCount * 3);
@@ -91,9 +103,17 @@ struct PolyBuilder {
             unsigned char* rgb = colors->GetPointer(vertexCount * channels);
             for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
                 const glm::vec4 c =
-                    i < mesh.colors.size() ? linearToDisplay(mesh.colors[i]) : fallback;
+                    i < mesh.colors.size() ? linearToDisplay(tint * mesh.colors[i]) : fallback;
                 for (int k = 0; k < channels; ++k)
                     rgb[channels * i + k] = toByte(c[k]);
+            }
+        }
+        if (withUvs) {
+            float* t = uvs->GetPointer(vertexCount * 2);
+            for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+                const glm::vec2 uv = i < mesh.uvs.size() ? mesh.uvs[i] : glm::vec2(0.0f);
+                t[2 * i] = uv.x;
+                t[2 * i + 1] = uv.y;
             }
         }
         vtkIdType* off = offsets->GetPointer(0);
@@ -121,6 +141,7 @@ struct PolyBuilder {
         poly->SetPolys(cells);
         poly->GetPointData()->SetNormals(normals);
         if (withColors) poly->GetPointData()->SetScalars(colors);
+        if (withUvs) poly->GetPointData()->SetTCoords(uvs);
         // Added, not made active: the mapper must not colour by instance id.
         if (withInstanceIds) poly->GetCellData()->AddArray(instanceIds);
         return poly;
@@ -133,6 +154,23 @@ vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
         for (int col = 0; col < 4; ++col)
             matrix->SetElement(row, col, m[col][row]); // glm is column-major
     return matrix;
+}
+
+// The decoded texture `instance` is drawn with, null when untextured (no texture, unreadable,
+// or the mesh has no uvs).
+std::shared_ptr<const RgbaImage> textureOf(const Scene& scene, Id instance) {
+    const Mesh& mesh = scene.meshes[scene.instances[instance].mesh];
+    if (mesh.uvs.size() != mesh.positions.size() || mesh.material >= scene.materials.size())
+        return nullptr;
+    const Id t = scene.materials[mesh.material].texture;
+    if (t >= scene.textures.size()) return nullptr;
+    const auto& image = scene.textures[t].image;
+    return image && !image->empty() ? image : nullptr;
+}
+
+// Textured parts show base colour factor x texture; untextured ones the effective colour.
+glm::vec4 partColor(const Material& material, bool textured) {
+    return linearToDisplay(textured ? material.baseColor : material.effectiveColor());
 }
 
 void applyLook(vtkActor& actor, const ScenePart& part) {
@@ -193,12 +231,16 @@ void SceneActors::buildPerInstance(const Scene& scene) {
         const MeshInstance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[instance.mesh];
         if (mesh.triangleCount() == 0) continue;
+        const std::shared_ptr<const RgbaImage> texture = textureOf(scene, i);
         if (!meshData[instance.mesh]) {
             PolyBuilder builder;
             builder.withColors = !mesh.colors.empty();
+            builder.withUvs = texture != nullptr;
             builder.reserve(static_cast<vtkIdType>(mesh.vertexCount()),
                             static_cast<vtkIdType>(mesh.triangleCount()));
-            builder.append(mesh, glm::dmat4(1.0), glm::vec4(1.0f), instance.mesh);
+            const Id m = mesh.material < scene.materials.size() ? mesh.material : 0;
+            builder.append(mesh, glm::dmat4(1.0), glm::vec4(1.0f), instance.mesh,
+                           texture ? scene.materials[m].baseColor : glm::vec4(1.0f));
             meshData[instance.mesh] = builder.finish();
         }
         ScenePart part;
@@ -206,8 +248,12 @@ void SceneActors::buildPerInstance(const Scene& scene) {
         part.transform = scene.instanceTransform(i);
         part.material = mesh.material < scene.materials.size() ? mesh.material : 0;
         part.instance = i;
-        part.color = linearToDisplay(scene.materials[part.material].effectiveColor());
+        const Material& material = scene.materials[part.material];
+        part.color = partColor(material, texture != nullptr);
         part.vertexColors = !mesh.colors.empty();
+        part.texture = texture;
+        part.alphaMode = material.alphaMode;
+        part.alphaCutoff = material.alphaCutoff;
         parts_.push_back(std::move(part));
     }
 }
@@ -249,8 +295,11 @@ std::vector<glm::vec4> displayColors(const Scene& scene) {
 void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
     const std::vector<glm::vec4> colors = displayColors(scene);
     std::vector<MergeGroup> byMaterial(scene.materials.size());
-    for (Id i = 0; i < scene.instances.size(); ++i)
+    std::vector<std::shared_ptr<const RgbaImage>> textures(scene.instances.size());
+    for (Id i = 0; i < scene.instances.size(); ++i) {
         byMaterial[materialOf(scene, i)].add(scene, i);
+        textures[i] = textureOf(scene, i);
+    }
     const auto used = static_cast<std::size_t>(std::count_if(
         byMaterial.begin(), byMaterial.end(), [](const MergeGroup& g) { return g.triangles > 0; }));
 
@@ -259,45 +308,80 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
         for (Id material = 0; material < byMaterial.size(); ++material) {
             const MergeGroup& group = byMaterial[material];
             if (group.triangles == 0) continue;
+            // Textured only when every instance can be (all have uvs).
+            const bool textured = std::all_of(group.instances.begin(), group.instances.end(),
+                                              [&](Id i) { return textures[i] != nullptr; });
+            const Material& m = scene.materials[material];
+            ScenePart part;
+            part.material = material;
+            part.color = partColor(m, textured);
+            part.vertexColors = group.anyColors;
             PolyBuilder builder;
             builder.withColors = group.anyColors;
+            builder.withUvs = textured;
             builder.withInstanceIds = true;
             builder.reserve(group.vertices, group.triangles);
             for (Id i : group.instances)
                 builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
-                               colors[material], i);
-            ScenePart part;
+                               part.color, i, textured ? m.baseColor : glm::vec4(1.0f));
             part.polyData = builder.finish();
-            part.material = material;
-            part.color = colors[material];
-            part.vertexColors = group.anyColors;
+            if (textured) {
+                part.texture = textures[group.instances.front()];
+                part.alphaMode = m.alphaMode;
+                part.alphaCutoff = m.alphaCutoff;
+            }
             parts_.push_back(std::move(part));
         }
         return;
     }
+    buildByOpacity(scene, colors, textures);
+}
 
-    // Too many materials for one actor each (TORCS has one per object): merge everything
-    // opaque into one polydata and everything translucent into another, with each material's
-    // colour (and opacity) stored per vertex.
+// Too many materials for one actor each (TORCS has one per object): everything untextured and
+// opaque in one polydata, untextured translucent in another, textured meshes in one per
+// texture and alpha mode, with each material's colour (and opacity) stored per vertex.
+void SceneActors::buildByOpacity(const Scene& scene, const std::vector<glm::vec4>& colors,
+                                 const std::vector<std::shared_ptr<const RgbaImage>>& textures) {
     layout_ = Layout::ByOpacity;
     MergeGroup opaque, translucent;
-    for (Id i = 0; i < scene.instances.size(); ++i)
-        (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);
-    for (MergeGroup* group : {&opaque, &translucent}) {
+    std::map<std::tuple<const RgbaImage*, AlphaMode, float>, MergeGroup> textured;
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        const Material& m = scene.materials[materialOf(scene, i)];
+        if (textures[i])
+            textured[{textures[i].get(), m.alphaMode, m.alphaCutoff}].add(scene, i);
+        else
+            (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);
+    }
+    std::vector<MergeGroup*> groups{&opaque, &translucent};
+    for (auto& [key, group] : textured)
+        groups.push_back(&group);
+    for (MergeGroup* group : groups) {
         if (group->triangles == 0) continue;
+        const bool isTextured = group != &opaque && group != &translucent;
+        const Material& first = scene.materials[materialOf(scene, group->instances.front())];
         PolyBuilder builder;
         builder.withColors = true;
-        builder.colorComponents = group == &translucent ? 4 : 3;
+        builder.colorComponents =
+            group == &translucent || (isTextured && first.alphaMode == AlphaMode::Blend) ? 4 : 3;
+        builder.withUvs = isTextured;
         builder.withInstanceIds = true;
         builder.reserve(group->vertices, group->triangles);
-        for (Id i : group->instances)
+        for (Id i : group->instances) {
+            const Material& m = scene.materials[materialOf(scene, i)];
             builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
-                           colors[materialOf(scene, i)], i);
+                           isTextured ? partColor(m, true) : colors[materialOf(scene, i)], i,
+                           isTextured ? m.baseColor : glm::vec4(1.0f));
+        }
         ScenePart part;
         part.polyData = builder.finish();
         part.material = kNoId;
         part.color = glm::vec4(1.0f);
         part.vertexColors = true;
+        if (isTextured) {
+            part.texture = textures[group->instances.front()];
+            part.alphaMode = first.alphaMode;
+            part.alphaCutoff = first.alphaCutoff;
+        }
         parts_.push_back(std::move(part));
     }
 }
@@ -314,6 +398,12 @@ const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
         actor->SetMapper(mapper);
         if (part.transform != glm::dmat4(1.0)) actor->SetUserMatrix(toVtk(part.transform));
         applyLook(*actor, part);
+        if (part.texture) {
+            auto& texture = textures_[part.texture.get()];
+            if (!texture) texture = makeVtkTexture(*part.texture);
+            actor->SetTexture(texture);
+            applyAlphaMode(*actor, part.alphaMode, part.alphaCutoff);
+        }
         actors_.push_back(actor);
     }
     return actors_;

@@ -7,19 +7,23 @@
 //  - merged (more instances): one vtkPolyData per material with every instance's vertices
 //    transformed to world in double and stored as float. VTK's per-actor overhead makes
 //    thousands of actors slow (TORCS has ~4400 instances); tens of actors render at full speed.
-//    With more than maxMergedParts materials, geometry is merged by opacity instead and the
+//    With more than maxMergedParts materials, geometry is merged by opacity instead (textured
+//    meshes by texture and alpha mode: TORCS has ~4400 materials but 28 textures) and the
 //    material colours go per vertex. Each cell keeps the id of the instance it came from in the
 //    cell array "InstanceId", so picking can map back to the scene.
 //
-// Colour: the material's effective colour (base colour times the texture's mean), converted
-// from linear to sRGB since VTK does no colour management; vertex colours, when a mesh has
-// them, replace it.
+// Colour: untextured, the material's effective colour (base colour times the texture's mean,
+// white for no texture), converted from linear to sRGB since VTK does no colour management;
+// vertex colours, when a mesh has them, replace it. Textured (the material's texture decoded
+// and the mesh has uvs): base colour factor x vertex colour x texture, the alpha cut-out
+// (MASK) honoured, as `hlod bench --shading textured` draws it (VtkSurfaceLook.h).
 // Threading: build() creates only data objects and may run on a worker thread; actors()
 // creates the vtkActors and must run on the GUI thread.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -27,6 +31,7 @@
 #include <vtkActor.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTexture.h>
 
 #include "pipeline/scene/Scene.h"
 
@@ -47,6 +52,9 @@ struct ScenePart {
     Id instance = kNoId;   // the instance drawn; kNoId for merged parts (see "InstanceId")
     glm::vec4 color{1.0f}; // display colour, sRGB, alpha = opacity
     bool vertexColors = false;
+    std::shared_ptr<const RgbaImage> texture; // base colour texture (the polydata has uvs)
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
 };
 
 class SceneActors {
@@ -63,7 +71,8 @@ public:
     enum class Layout {
         PerInstance, // one actor per instance
         PerMaterial, // merged, one part per material
-        ByOpacity,   // merged, one opaque and one translucent part, colours per vertex
+        ByOpacity,   // merged, one opaque and one translucent part (and one per texture),
+                     // colours per vertex
     };
 
     const std::vector<ScenePart>& parts() const { return parts_; }
@@ -83,9 +92,12 @@ public:
 private:
     void buildPerInstance(const Scene& scene);
     void buildMerged(const Scene& scene, std::size_t maxParts);
+    void buildByOpacity(const Scene& scene, const std::vector<glm::vec4>& colors,
+                        const std::vector<std::shared_ptr<const RgbaImage>>& textures);
 
     std::vector<ScenePart> parts_;
     std::vector<vtkSmartPointer<vtkActor>> actors_;
+    std::map<const RgbaImage*, vtkSmartPointer<vtkTexture>> textures_; // one upload per image
     Layout layout_ = Layout::PerInstance;
     std::size_t instanceCount_ = 0;
     std::size_t triangleCount_ = 0;

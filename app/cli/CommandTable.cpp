@@ -85,8 +85,12 @@ std::vector<CommandSpec> makeCommands() {
            "2"},
           {"--path", "", "FILE.json", "Camera path to fly instead of the generated one.", ""},
           {"--threads", "", "N", "Baking threads (0 to 1024; 0 = all hardware threads).", "0"},
-          {"--shading", "", "geometry|colour",
-           "geometry: grey, lit; colour: the materials' base colours.", "geometry"},
+          {"--shading", "", "geometry|colour|textured",
+           "geometry: grey, lit; colour: the materials' base colours; textured: base colour "
+           "factor x texture x vertex colour, cut-outs honoured.",
+           "geometry"},
+          {"--proxy-textures", "", "on|off",
+           "Bake a base-colour atlas per proxy (on) or keep vertex colours only (off).", "on"},
           {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
     return v;
 }

@@ -1,5 +1,6 @@
 // `hlod bench [SCENE...] --out DIR [--frames N] [--size WxH] [--configs LIST]
-// [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour]`:
+// [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]
+// [--proxy-textures on|off]`:
 // the thesis' evaluation on one scene (see bench/BenchRun.h for what is measured and how).
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
 // side_by_side_*.png. Needs an X display (xvfb-run -a on a headless machine).
@@ -93,10 +94,17 @@ int runBench(const CommandArgs& argv) {
         o.shading = Shading::Geometry;
     else if (shading == "colour" || shading == "color")
         o.shading = Shading::Colour;
+    else if (shading == "textured")
+        o.shading = Shading::Textured;
     else
         throw Error(ErrorCode::InvalidArgument,
-                    "--shading must be geometry or colour, not '" + shading + "'");
+                    "--shading must be geometry, colour or textured, not '" + shading + "'");
     if (!args.has("--no-cache")) o.cacheDir = benchCacheDir();
+    const std::string textures = args.value("--proxy-textures", "on");
+    if (textures != "on" && textures != "off")
+        throw Error(ErrorCode::InvalidArgument,
+                    "--proxy-textures must be on or off, not '" + textures + "'");
+    o.proxyTextures = textures == "on";
     if (const char* d = std::getenv("DISPLAY"); !d || !*d)
         throw Error(ErrorCode::InvalidArgument,
                     "bench renders with VTK, which needs an X display here (Debian's VTK has no "

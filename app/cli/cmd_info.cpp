@@ -56,6 +56,14 @@ nlohmann::json toJson(const LoadedScene& loaded) {
                              {"triangles", m.triangleCount()}});
     }
     j["instances"] = std::move(instances);
+    nlohmann::json textures = nlohmann::json::array();
+    for (const Texture& t : s.textures) {
+        nlohmann::json tj = {{"name", t.name}, {"file", t.file.string()}};
+        if (t.image) tj["size"] = {t.image->width, t.image->height};
+        if (!t.error.empty()) tj["error"] = t.error;
+        textures.push_back(std::move(tj));
+    }
+    j["textures"] = std::move(textures);
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
         const DiskFootprint disk = filesFootprint({p.dir});
@@ -86,6 +94,10 @@ void printText(const LoadedScene& loaded) {
     std::printf("triangles:  %zu (%zu unique)\n", st.triangles, st.uniqueTriangles);
     std::printf("vertices:   %zu (%zu unique)\n", st.vertices, st.uniqueVertices);
     std::printf("materials:  %zu\n", st.materials);
+    std::size_t unreadable = 0;
+    for (const Texture& t : s.textures)
+        unreadable += t.image ? 0 : 1;
+    std::printf("textures:   %zu (%zu unreadable)\n", s.textures.size(), unreadable);
     std::printf("bounds:     [%.3f, %.3f, %.3f] .. [%.3f, %.3f, %.3f] m\n", b.min.x, b.min.y,
                 b.min.z, b.max.x, b.max.y, b.max.z);
     const glm::dvec3 e = b.extent();
@@ -106,6 +118,10 @@ void printText(const LoadedScene& loaded) {
 int runInfo(const CommandArgs& argv) {
     const Args args(argv, command("info"));
     const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
+    // Unreadable textures are not fatal (the material keeps its colour), but they are named.
+    for (const Texture& t : loaded.scene.textures) {
+        if (!t.error.empty()) std::fprintf(stderr, "hlod info: warning: %s\n", t.error.c_str());
+    }
     if (args.has("--json")) {
         std::cout << toJson(loaded).dump(2) << "\n";
     } else {

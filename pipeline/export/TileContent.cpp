@@ -145,8 +145,15 @@ GlbMesh proxyGlbMesh(const ProxyMesh& proxy, const std::string& name) {
     m.name = name;
     m.positions = proxy.positions;
     m.normals = proxy.normals;
-    m.colors = proxy.colors;
     m.indices = proxy.indices;
+    if (proxy.hasAtlas()) { // the atlas carries the whole base colour (ProxyMesh.h)
+        m.uvs = proxy.uvs;
+        m.image = proxy.atlas->encoded;
+        m.imageMimeType = proxy.atlas->mimeType;
+        m.alphaMask = proxy.atlas->mask;
+    } else {
+        m.colors = proxy.colors;
+    }
     return m;
 }
 
@@ -156,10 +163,9 @@ EncodedContent ContentEncoder::encode(const ContentPlan& plan) {
 
 EncodedContent ContentEncoder::encodeProxy(const ContentPlan& plan) {
     ProxyMesh proxy = bake_.nodes[plan.node].proxy;
-    // Every per-vertex stream of the proxy goes through the same reordering (uvs too, once
-    // proxies carry an atlas: add them here and in proxyGlbMesh).
+    // Every per-vertex stream of the proxy goes through the same reordering.
     optimizeOrder(proxy.indices, proxy.positions.size(), proxy.positions, proxy.normals,
-                  proxy.colors);
+                  proxy.colors, proxy.uvs);
     GlbScene glb;
     glb.compression = compression_;
     glb.meshes.push_back(proxyGlbMesh(proxy, "proxy"));

@@ -1,7 +1,8 @@
-// The glTF content of one tile (PackageLayout.h says what goes where): a proxy (vertex colours),
-// or a leaf group: instanced meshes under nodes, the other leaves merged per material into one
-// primitive in the group's frame, each keeping its material: base colour and base colour
-// texture.
+// The glTF content of one tile (PackageLayout.h says what goes where): a proxy (its baked atlas
+// embedded as the base colour texture, MASK when it has a cut-out; vertex colours when it has
+// none), or a leaf group: instanced meshes under nodes, the other leaves merged per material
+// into one primitive in the group's frame, each keeping its material: base colour and base
+// colour texture.
 // Vertex order: every mesh goes through meshoptimizer's vertex cache and vertex fetch
 // optimisation (Forsyth-like cache order, then vertices in first-use order; unreferenced
 // vertices dropped) before it is encoded, whatever the compression, so compressed and plain

@@ -118,6 +118,13 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
                             "ratio / (1 - ratio) of the original; 1 keeps every proxy",
                             "--proxy-ratio"),
                        0.05, 1.0, true));
+    v.push_back(choices(decl("proxy_textures", "Proxy textures", T::Enum, N::Bake,
+                             std::string("on"), "",
+                             "Bake a base-colour atlas for every proxy (charts, one texel per "
+                             "pixel at the switch, sampled from the originals); off: the "
+                             "proxies carry vertex colours only",
+                             "--proxy-textures"),
+                        {"on", "off"}));
     v.push_back(ranged(decl("threads", "Threads", T::Int, N::Bake, 0, "",
                             "Worker threads for baking; 0 = all hardware threads", "--threads"),
                        0, 1024));
@@ -451,6 +458,7 @@ BakeParams bakeParamsFrom(const ParamValues& v) {
     p.screen.fovYDegrees = paramNumber(v, "fov");
     p.screen.viewportHeight = paramNumber(v, "viewport_height");
     p.proxyRatio = paramNumber(v, "proxy_ratio");
+    p.atlas.enabled = paramText(v, "proxy_textures") == "on";
     p.threads = paramInt(v, "threads");
     if (paramBool(v, "cache")) {
         const std::string dir = paramText(v, "cache_dir");
@@ -483,6 +491,7 @@ ParamValues paramsFrom(const BakeParams& p) {
     v["fov"] = p.screen.fovYDegrees;
     v["viewport_height"] = p.screen.viewportHeight;
     v["proxy_ratio"] = p.proxyRatio;
+    v["proxy_textures"] = std::string(p.atlas.enabled ? "on" : "off");
     v["threads"] = p.threads;
     v["cache"] = !p.cacheDir.empty();
     v["cache_dir"] = p.cacheDir.string();

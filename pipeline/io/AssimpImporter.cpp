@@ -20,9 +20,10 @@
 #include <set>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/io/Ac3dTextures.h"
+#include "pipeline/io/ImageDecode.h"
 #include "pipeline/io/Import.h"
 #include "pipeline/io/Precheck.h"
-#include "pipeline/io/TextureMean.h"
 
 namespace hlod {
 
@@ -62,29 +63,46 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
                       m.b4, m.c4, m.d4);
 }
 
-glm::vec4 embeddedTextureMean(const aiTexture* tex, glm::vec4 fallback) {
-    if (tex->mHeight == 0) { // compressed (PNG/JPEG bytes)
-        auto mean =
-            meanColorOfImage(reinterpret_cast<const unsigned char*>(tex->pcData), tex->mWidth);
-        return mean.value_or(fallback);
+// An embedded assimp texture: compressed bytes (PNG, JPEG...; mHeight 0) or raw BGRA texels.
+Texture embeddedTexture(const aiTexture* tex, const std::string& name) {
+    if (tex->mHeight == 0) {
+        return textureFromBytes(
+            {reinterpret_cast<const std::uint8_t*>(tex->pcData), tex->mWidth}, name);
     }
+    Texture t;
+    t.name = name;
+    auto image = std::make_shared<RgbaImage>(static_cast<int>(tex->mWidth),
+                                             static_cast<int>(tex->mHeight));
     const std::size_t n = static_cast<std::size_t>(tex->mWidth) * tex->mHeight;
-    if (n == 0) return fallback;
-    double sum[4] = {0, 0, 0, 0};
     for (std::size_t i = 0; i < n; ++i) {
-        sum[0] += tex->pcData[i].r / 255.0;
-        sum[1] += tex->pcData[i].g / 255.0;
-        sum[2] += tex->pcData[i].b / 255.0;
-        sum[3] += tex->pcData[i].a / 255.0;
+        const aiTexel& c = tex->pcData[i];
+        image->set(static_cast<int>(i % tex->mWidth), static_cast<int>(i / tex->mWidth),
+                   glm::u8vec4(c.r, c.g, c.b, c.a));
     }
-    return glm::vec4(sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n);
+    t.image = std::move(image);
+    return t;
+}
+
+// Formats without an alpha mode (OBJ, FBX, AC3D...): a texture with translucent texels is a
+// cut-out (trees, fences, barriers drawn as textured quads, as TORCS draws them with alpha
+// testing); a material with an opacity below 1 blends.
+void chooseAlphaMode(Material& mat, bool translucentTexels) {
+    if (mat.baseColor.a < 1.0f) {
+        mat.alphaMode = AlphaMode::Blend;
+    } else if (translucentTexels) {
+        mat.alphaMode = AlphaMode::Mask;
+        mat.alphaCutoff = 0.5f;
+    }
 }
 
 class MaterialReader {
 public:
-    MaterialReader(const aiScene* s, fs::path folder) : scene_(s), folder_(std::move(folder)) {}
+    MaterialReader(const aiScene* s, fs::path folder, Scene& scene)
+        : scene_(s), folder_(std::move(folder)), out_(scene) {}
 
-    Material read(const aiMaterial* m) {
+    // `firstTexture`: the texture the source file names first for this material's object,
+    // when the format's loader kept another one (AC3D, see Ac3dTextures.h); empty otherwise.
+    Material read(const aiMaterial* m, const std::string& firstTexture) {
         Material mat;
         aiString name;
         if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
@@ -98,10 +116,13 @@ public:
             mat.baseColor.a = std::min(opacity, 1.0f);
         }
         aiString path;
-        if (m->GetTexture(aiTextureType_BASE_COLOR, 0, &path) == AI_SUCCESS ||
-            m->GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS) {
+        if (!firstTexture.empty()) {
+            readTexture(firstTexture, mat);
+        } else if (m->GetTexture(aiTextureType_BASE_COLOR, 0, &path) == AI_SUCCESS ||
+                   m->GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS) {
             readTexture(path.C_Str(), mat);
         }
+        chooseAlphaMode(mat, mat.texture != kNoId && translucent_[mat.texture]);
         return mat;
     }
 
@@ -110,7 +131,7 @@ private:
         if (ref.empty()) return;
         mat.hasTexture = true;
         if (const aiTexture* tex = scene_->GetEmbeddedTexture(ref.c_str())) {
-            mat.textureMean = embeddedTextureMean(tex, mat.textureMean);
+            useTexture(ref, mat, [&] { return embeddedTexture(tex, ref); });
             return;
         }
         std::string rel = ref;
@@ -122,15 +143,56 @@ private:
         // the material keeps its base colour.
         if (!isInsideFolder(p, folder_)) return;
         mat.baseColorTexture = p;
-        auto it = cache_.find(p.string());
-        if (it == cache_.end()) it = cache_.emplace(p.string(), meanColorOfImageFile(p)).first;
-        if (it->second) mat.textureMean = *it->second;
+        useTexture(p.string(), mat, [&] { return loadTexture(p); });
+    }
+
+    // One Texture per distinct reference, decoded once; its mean colour and whether it has
+    // transparent texels computed once.
+    template <class Load> void useTexture(const std::string& key, Material& mat, Load load) {
+        auto it = cache_.find(key);
+        if (it == cache_.end()) {
+            Texture t = load();
+            const glm::vec4 mean = t.image ? meanLinearColor(*t.image) : glm::vec4(1.0f);
+            const bool translucent = t.image && t.image->hasTranslucentTexels();
+            const Id id = out_.addTexture(std::move(t));
+            translucent_[id] = translucent;
+            it = cache_.emplace(key, std::make_pair(id, mean)).first;
+        }
+        mat.texture = it->second.first;
+        mat.textureMean = it->second.second;
     }
 
     const aiScene* scene_;
     fs::path folder_;
-    std::map<std::string, std::optional<glm::vec4>> cache_;
+    Scene& out_;
+    std::map<std::string, std::pair<Id, glm::vec4>> cache_;
+    std::map<Id, bool> translucent_;
 };
+
+// For AC3D files: per assimp material, the first texture its object names (see
+// Ac3dTextures.h), found by walking assimp's node tree and the file's object tree together.
+// Empty strings where nothing is known (other formats, or the trees do not pair up).
+std::vector<std::string> firstTexturesOfMaterials(const aiScene* as, const fs::path& file) {
+    std::vector<std::string> out(as->mNumMaterials);
+    if (!isAc3dPath(file)) return out;
+    const std::optional<std::vector<Ac3dObject>> objects = readAc3dObjects(file);
+    if (!objects || objects->size() != 1) return out; // assimp adds a root for several
+    std::vector<std::pair<const aiNode*, const Ac3dObject*>> stack{{as->mRootNode, &objects->front()}};
+    while (!stack.empty()) {
+        auto [node, object] = stack.back();
+        stack.pop_back();
+        for (unsigned i = 0; node->mMeshes && i < node->mNumMeshes; ++i) {
+            const unsigned m = node->mMeshes[i];
+            if (m >= as->mNumMeshes || !as->mMeshes[m]) continue;
+            const unsigned mat = as->mMeshes[m]->mMaterialIndex;
+            if (mat < out.size()) out[mat] = object->firstTexture;
+        }
+        if (node->mNumChildren != object->kids.size()) continue; // trees differ: keep assimp's
+        for (unsigned c = 0; c < node->mNumChildren; ++c)
+            stack.push_back({node->mChildren[c], &object->kids[c]});
+    }
+    return out;
+}
 
 Mesh convertMesh(const aiMesh* am) {
     Mesh mesh;
@@ -259,10 +321,11 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
     for (const fs::path& f : io->opened()) {
         if (f != fs::absolute(file).lexically_normal()) scene.referencedFiles.push_back(f);
     }
-    MaterialReader materials(as, folder);
+    MaterialReader materials(as, folder, scene);
+    const std::vector<std::string> firstTextures = firstTexturesOfMaterials(as, file);
     std::vector<Id> materialIds;
     for (unsigned i = 0; i < as->mNumMaterials; ++i) {
-        materialIds.push_back(scene.addMaterial(materials.read(as->mMaterials[i])));
+        materialIds.push_back(scene.addMaterial(materials.read(as->mMaterials[i], firstTextures[i])));
     }
     std::vector<Id> meshIds(as->mNumMeshes, kNoId);
     for (unsigned i = 0; i < as->mNumMeshes; ++i) {

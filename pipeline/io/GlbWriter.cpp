@@ -142,7 +142,12 @@ int materialIndex(Doc& doc, const GlbMesh& m) {
     }
     nlohmann::json mat = {{"name", m.materialName.empty() ? m.name : m.materialName},
                           {"pbrMetallicRoughness", pbr}};
-    if (c.a < 1.0f) mat["alphaMode"] = "BLEND";
+    if (m.alphaMask) {
+        mat["alphaMode"] = "MASK";
+        mat["alphaCutoff"] = m.alphaCutoff;
+    } else if (c.a < 1.0f) {
+        mat["alphaMode"] = "BLEND";
+    }
     nlohmann::json key = mat;
     key.erase("name"); // meshes of the same look share a material whatever their names
     const std::string k = key.dump();

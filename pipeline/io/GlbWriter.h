@@ -1,10 +1,11 @@
 // glTF 2.0 binary (GLB) writer for a flat scene of triangle meshes: each mesh one primitive with
 // positions, optional normals, texture coordinates and vertex colours (COLOR_0 as normalised
 // unsigned bytes, linear) and one PBR material (base colour factor and optional base colour
-// texture, metallic 0, roughness 1; alpha below 1 makes it BLEND); each node places one mesh
-// (or none) with a translation / rotation / scale in double precision (so content far from
-// the origin stays exact), all nodes roots of the one scene. Identical materials are written
-// once; a mesh referenced by several nodes is stored once (glTF instancing by reference).
+// texture, metallic 0, roughness 1; alpha below 1 makes it BLEND, alphaMask MASK); each node
+// places one mesh (or none) with a translation / rotation / scale in double precision (so
+// content far from the origin stays exact), all nodes roots of the one scene. Identical
+// materials are written once; a mesh referenced by several nodes is stored once (glTF
+// instancing by reference).
 // Follows the Khronos glTF 2.0 specification, section 4.4 (GLB container) and 5 (JSON
 // schema): little-endian chunks padded to 4 bytes, POSITION min/max present, index type the
 // smallest of unsigned short / unsigned int that fits.
@@ -60,6 +61,10 @@ struct GlbMesh {
     // Meshopt only: the position grid asked for (metres of the mesh's frame; 0 = the finest
     // 16 bits allow). The grid used is positionGridStep (GlbMeshopt.h) of it.
     double positionStep = 0.0;
+    // glTF alphaMode MASK with this cut-off (textured cut-outs, e.g. a proxy atlas with
+    // alpha); otherwise OPAQUE, or BLEND when baseColor.a < 1.
+    bool alphaMask = false;
+    float alphaCutoff = 0.5f;
 };
 
 struct GlbNode {

@@ -26,7 +26,7 @@
 #include "pipeline/io/GltfAccessor.h"
 #include "pipeline/io/GltfMeshopt.h"
 #include "pipeline/io/Import.h"
-#include "pipeline/io/TextureMean.h"
+#include "pipeline/io/ImageDecode.h"
 
 namespace hlod {
 
@@ -38,8 +38,7 @@ struct LoadContext {
     fs::path file;
     fs::path folder;
     std::string refused; // first external path refused, for the error message
-    std::map<int, glm::vec4> imageMeans;
-    std::map<int, std::string> imageUris;
+    std::map<int, Texture> images; // decoded by the image callback, by glTF image index
     std::set<fs::path> referenced; // files read besides the scene file (buffers, images)
 };
 
@@ -92,41 +91,52 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
     return false;
 }
 
-// Images are not kept: only their mean colour (for proxies) and their URI (for export).
-// Mean colours of the images decoded so far in this process, by content. A package's leaf
-// tiles all reference the same few shared texture files: each is decoded once, not once per
-// tile. Bounded; the key is the bytes' size and hash, the bytes are compared on a hit.
-std::optional<glm::vec4> cachedMeanColor(const unsigned char* bytes, std::size_t size) {
+// Images decoded so far in this process, by content. A package's leaf tiles all reference the
+// same few shared texture files: each is decoded once, not once per tile. Bounded by the
+// decoded bytes it holds; the key is the bytes' size and hash, the bytes are compared on a hit.
+Texture cachedTexture(const unsigned char* bytes, std::size_t size, const std::string& name) {
     struct Entry {
         std::string bytes;
-        std::optional<glm::vec4> mean;
+        Texture texture;
     };
     static std::mutex mutex;
     static std::map<std::pair<std::size_t, std::size_t>, Entry> cache;
+    static std::size_t heldBytes = 0;
+    constexpr std::size_t kMaxHeldBytes = 256u << 20;
     const std::string_view view(reinterpret_cast<const char*>(bytes), size);
     const std::pair<std::size_t, std::size_t> key{size, std::hash<std::string_view>{}(view)};
     {
         std::lock_guard lock(mutex);
         if (auto it = cache.find(key); it != cache.end() && it->second.bytes == view) {
-            return it->second.mean;
+            Texture t = it->second.texture;
+            t.name = name;
+            return t;
         }
     }
-    std::optional<glm::vec4> mean = meanColorOfImage(bytes, size);
+    Texture texture = textureFromBytes({bytes, size}, name);
+    const std::size_t decoded = texture.image ? texture.image->pixels.size() : 0;
     std::lock_guard lock(mutex);
-    if (cache.size() >= 64) cache.clear();
-    cache[key] = Entry{std::string(view), mean};
-    return mean;
+    if (heldBytes + decoded + size > kMaxHeldBytes) {
+        cache.clear();
+        heldBytes = 0;
+    }
+    cache[key] = Entry{std::string(view), texture};
+    heldBytes += decoded + size;
+    return texture;
 }
 
 bool loadImage(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
     auto* ctx = static_cast<LoadContext*>(user);
-    if (auto mean = cachedMeanColor(bytes, static_cast<std::size_t>(size))) {
-        ctx->imageMeans[index] = *mean;
-    }
-    ctx->imageUris[index] = image->uri;
+    const std::string name =
+        !image->uri.empty() && image->uri.rfind("data:", 0) != 0
+            ? image->uri
+            : (image->name.empty() ? "image " + std::to_string(index) : image->name);
+    Texture texture = cachedTexture(bytes, static_cast<std::size_t>(std::max(size, 0)), name);
+    if (!texture.error.empty()) texture.error = ctx->file.string() + ": " + texture.error;
+    ctx->images[index] = std::move(texture);
     image->image.clear();
-    return true; // an undecodable texture must not fail the whole scene: the mean stays white
+    return true; // an undecodable texture must not fail the whole scene: see Scene.h Texture
 }
 
 glm::dmat4 nodeTransform(const tinygltf::Node& n) {
@@ -163,25 +173,43 @@ void checkRequiredExtensions(const tinygltf::Model& model, const fs::path& file)
     }
 }
 
-std::vector<Id> importMaterials(const tinygltf::Model& model, const LoadContext& ctx,
-                                Scene& scene) {
+AlphaMode alphaModeOf(const std::string& mode) {
+    if (mode == "MASK") return AlphaMode::Mask;
+    if (mode == "BLEND") return AlphaMode::Blend;
+    return AlphaMode::Opaque;
+}
+
+std::vector<Id> importMaterials(const tinygltf::Model& model, LoadContext& ctx, Scene& scene) {
     std::vector<Id> ids;
+    std::map<int, Id> textureOfImage;
+    std::map<Id, glm::vec4> means; // per texture, computed once
     for (const tinygltf::Material& m : model.materials) {
         Material mat;
         mat.name = m.name;
         const auto& f = m.pbrMetallicRoughness.baseColorFactor;
         if (f.size() == 4) mat.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
+        mat.alphaMode = alphaModeOf(m.alphaMode);
+        mat.alphaCutoff = static_cast<float>(m.alphaCutoff);
         const int tex = m.pbrMetallicRoughness.baseColorTexture.index;
         if (tex >= 0 && tex < static_cast<int>(model.textures.size())) {
             const int img = model.textures[static_cast<std::size_t>(tex)].source;
             if (img >= 0 && img < static_cast<int>(model.images.size())) {
                 mat.hasTexture = true;
-                if (auto it = ctx.imageMeans.find(img); it != ctx.imageMeans.end()) {
-                    mat.textureMean = it->second;
-                }
                 const std::string& uri = model.images[static_cast<std::size_t>(img)].uri;
                 if (!uri.empty() && uri.rfind("data:", 0) != 0) {
                     mat.baseColorTexture = fs::absolute(ctx.folder / uri).lexically_normal();
+                }
+                if (auto it = ctx.images.find(img); it != ctx.images.end()) {
+                    auto [known, added] = textureOfImage.try_emplace(img, kNoId);
+                    if (added) {
+                        it->second.file = mat.baseColorTexture;
+                        known->second = scene.addTexture(it->second);
+                        if (const auto& image = it->second.image)
+                            means[known->second] = meanLinearColor(*image);
+                    }
+                    mat.texture = known->second;
+                    if (auto mean = means.find(mat.texture); mean != means.end())
+                        mat.textureMean = mean->second;
                 }
             }
         }

@@ -9,6 +9,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "pipeline/io/ImageDecode.h"
+
 namespace hlod {
 
 namespace {
@@ -33,20 +35,40 @@ void appendBytes(void* context, void* data, int size) {
 std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes) {
     if (bytes.empty() || bytes.size() > static_cast<std::size_t>(INT32_MAX)) return std::nullopt;
     const int size = static_cast<int>(bytes.size());
-    int w = 0, h = 0, comp = 0;
-    // Pass-through formats must still be decodable: a corrupt PNG would fail the validator.
-    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &comp) || w <= 0 || h <= 0) {
-        return std::nullopt;
+    if (isPng(bytes) || isJpeg(bytes)) {
+        int w = 0, h = 0, comp = 0;
+        // Pass-through formats must still be decodable: a corrupt PNG would fail the validator.
+        if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &comp) || w <= 0 || h <= 0) {
+            return std::nullopt;
+        }
+        return EncodedImage{{bytes.begin(), bytes.end()}, isPng(bytes) ? "image/png" : "image/jpeg"};
     }
-    if (isPng(bytes)) return EncodedImage{{bytes.begin(), bytes.end()}, "image/png"};
-    if (isJpeg(bytes)) return EncodedImage{{bytes.begin(), bytes.end()}, "image/jpeg"};
-    unsigned char* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &comp, 4);
-    if (!pixels) return std::nullopt;
+    std::string why;
+    const std::optional<RgbaImage> image = decodeImage(bytes, why); // SGI, BMP, TGA, ...
+    if (!image) return std::nullopt;
+    EncodedImage out = encodePng(*image);
+    if (out.bytes.empty()) return std::nullopt;
+    return out;
+}
+
+EncodedImage encodePng(const RgbaImage& image) {
     EncodedImage out;
     out.mimeType = "image/png";
-    const int ok = stbi_write_png_to_func(&appendBytes, &out.bytes, w, h, 4, pixels, w * 4);
-    stbi_image_free(pixels);
-    if (!ok || out.bytes.empty()) return std::nullopt;
+    if (image.empty()) return out;
+    if (!stbi_write_png_to_func(&appendBytes, &out.bytes, image.width, image.height, 4,
+                                image.pixels.data(), image.width * 4))
+        out.bytes.clear();
+    return out;
+}
+
+EncodedImage encodeJpeg(const RgbaImage& image, int quality) {
+    EncodedImage out;
+    out.mimeType = "image/jpeg";
+    if (image.empty()) return out;
+    // stb writes the first three channels of a 4-channel image (alpha is dropped).
+    if (!stbi_write_jpg_to_func(&appendBytes, &out.bytes, image.width, image.height, 4,
+                                image.pixels.data(), quality))
+        out.bytes.clear();
     return out;
 }
 

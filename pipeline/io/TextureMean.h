@@ -1,4 +1,4 @@
-// Mean colour of an image (PNG, JPEG, BMP, TGA... whatever stb_image decodes).
+// Mean colour of an image (PNG, JPEG, BMP, TGA, SGI... whatever ImageDecode.h decodes).
 // Proxies replace textured materials by vertex colours: the mean is what survives.
 #pragma once
 

@@ -17,6 +17,7 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/Aggregate.h"
+#include "pipeline/proxy/AtlasStep.h"
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/proxy/ProxyCache.h"
@@ -87,6 +88,7 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
     case ProxyMethod::Sloppy:
         break;
     }
+    hashAtlasOptions(h, params.atlas);
 }
 
 std::uint64_t hashMesh(const Mesh& mesh) {
@@ -113,7 +115,7 @@ void fillFrames(const Scene& scene, const ClusterTree& tree, const BakeParams& p
 // Leaf keys: what a leaf contributes in its own frame (mesh, material colour and the linear
 // part of its transform; the translation enters the parent's key as a quantised offset).
 void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& order,
-              std::vector<NodeBake>& nodes) {
+              const BakeParams& params, std::vector<NodeBake>& nodes) {
     std::vector<std::uint8_t> used(scene.meshes.size(), 0);
     for (Id id : order) {
         const ClusterNode& n = tree.nodes[id];
@@ -123,6 +125,8 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
     tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t m) {
         if (used[m]) meshHash[m] = hashMesh(scene.meshes[m]);
     });
+    const std::vector<std::uint64_t> texHash =
+        params.atlas.enabled ? textureHashes(scene) : std::vector<std::uint64_t>{};
     for (Id id : order) {
         const ClusterNode& node = tree.nodes[id];
         if (!node.isLeaf()) continue;
@@ -134,6 +138,7 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
             h.addValue(meshHash[inst.mesh]);
             h.addValue(scene.materials[mat].effectiveColor());
             h.addValue(glm::dmat3(scene.nodes[inst.node].world));
+            if (params.atlas.enabled) h.addValue(leafLookHash(scene, node.instance, texHash));
         }
         nodes[id].key = h.digest();
     }
@@ -178,6 +183,7 @@ struct BakeRun {
     std::unordered_map<std::uint64_t, Id> bakedByKey; // this run's proxies, by key
     std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0};
     tbb::task_group group;
+    TextureMips mips; // source texture pyramids, shared by every node's atlas
 
     // The representations node `id` is baked from: its children, a dissolved child replaced
     // by its own inputs (already expanded when that child was decided).
@@ -268,6 +274,7 @@ struct BakeRun {
         const std::vector<AggregatePart> parts = partsOf(id, inputs);
         nb.inputTriangles = aggregateTriangleCount(scene, parts);
         const glm::dvec3 origin = nb.proxy.origin;
+        bool store = false;
         if (std::optional<ProxyMesh> known = reuse(nb.key)) {
             nb.proxy = std::move(*known);
             nb.reused = true;
@@ -275,12 +282,20 @@ struct BakeRun {
         } else {
             nb.proxy =
                 makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params, progress);
-            cache.store(nb.key, nb.proxy);
+            store = true;
             ++baked;
         }
         nb.proxy.origin = origin;
-        remember(id);
         decide(id, std::move(inputs));
+        // The atlas once the geometry is final and kept (AtlasStep.h); a reused proxy may lack
+        // it when it was dissolved the time it was baked (a lock changes the decision).
+        if (params.atlas.enabled && !nb.dissolved && nb.hasProxy && !nb.proxy.hasAtlas()) {
+            progress.throwIfCancelled();
+            nb.proxy = bakeNodeAtlas(nb.proxy, scene, tree, id, result.nodes, params, mips);
+            store = true;
+        }
+        if (store) cache.store(nb.key, nb.proxy);
+        remember(id);
         const std::size_t finished = ++done;
         progress.emit(ProgressInfo{"bake", finished, result.innerNodes,
                                    "baked " + std::to_string(baked.load()) + ", reused " +
@@ -319,7 +334,7 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
     result.nodes.resize(tree.nodes.size());
     const std::vector<Id> order = postOrder(tree);
     fillFrames(scene, tree, params, order, result.nodes);
-    arena.execute([&] { leafKeys(scene, tree, order, result.nodes); });
+    arena.execute([&] { leafKeys(scene, tree, order, params, result.nodes); });
     for (Id id : order) {
         if (!tree.nodes[id].isLeaf()) ++result.innerNodes;
     }

@@ -49,6 +49,7 @@
 #include "pipeline/proxy/ErrorBudget.h"
 #include "pipeline/proxy/ProxyMesh.h"
 #include "pipeline/proxy/RemeshProxy.h"
+#include "pipeline/proxy/atlas/BakeAtlas.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod {
@@ -64,6 +65,9 @@ struct BakeParams {
     // its inputs' triangles; >= 1 keeps every proxy (the tree as clustered). Not part of the
     // cache key (the decision is made on the cached proxy).
     double proxyRatio = 0.35;
+    // Base-colour atlases of kept proxies (AtlasStep.h); off: vertex colours only. Part of the
+    // cache key when on.
+    AtlasOptions atlas;
 };
 
 struct NodeBake {

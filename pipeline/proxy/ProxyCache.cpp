@@ -6,6 +6,7 @@
 
 #include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/io/ImageDecode.h"
 #include "pipeline/proxy/ContentHash.h"
 
 namespace hlod {
@@ -13,8 +14,9 @@ namespace hlod {
 namespace {
 
 constexpr char kMagic[8] = {'H', 'L', 'O', 'D', 'P', 'R', 'X', '\0'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 constexpr std::uint32_t kHasNormals = 1;
+constexpr std::uint32_t kHasAtlas = 2; // uvs, then mask byte, mime type, encoded image
 constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 8 + 8 + 3 * 8;
 
 template <class T> void put(std::vector<std::uint8_t>& out, const T& value) {
@@ -51,6 +53,27 @@ private:
     std::size_t pos_ = 0;
 };
 
+// The atlas part of a cache file; the image is decoded from the stored bytes, as the bake
+// itself does (ProxyAtlas), so a cached proxy shows exactly what a fresh one shows.
+bool readAtlas(Reader& r, ProxyMesh& m, std::uint64_t vertices) {
+    auto atlas = std::make_shared<ProxyAtlas>();
+    std::uint8_t mask = 0;
+    std::uint64_t mimeBytes = 0, imageBytes = 0;
+    std::vector<char> mime;
+    if (!r.getArray(m.uvs, vertices) || !r.get(mask) || !r.get(mimeBytes) ||
+        !r.getArray(mime, mimeBytes) || !r.get(imageBytes) ||
+        !r.getArray(atlas->encoded, imageBytes))
+        return false;
+    atlas->mask = mask != 0;
+    atlas->mimeType.assign(mime.begin(), mime.end());
+    std::string why;
+    auto image = decodeImage(atlas->encoded, why);
+    if (!image) return false;
+    atlas->image = std::make_shared<const RgbaImage>(std::move(*image));
+    m.atlas = std::move(atlas);
+    return true;
+}
+
 } // namespace
 
 std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) {
@@ -60,8 +83,9 @@ std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) 
                 mesh.indices.size() * 4 + 8);
     out.resize(sizeof kMagic);
     std::memcpy(out.data(), kMagic, sizeof kMagic);
+    const bool atlas = mesh.hasAtlas();
     put(out, kVersion);
-    put(out, normals ? kHasNormals : 0u);
+    put(out, (normals ? kHasNormals : 0u) | (atlas ? kHasAtlas : 0u));
     put(out, key);
     put(out, static_cast<std::uint64_t>(mesh.positions.size()));
     put(out, static_cast<std::uint64_t>(mesh.indices.size()));
@@ -74,6 +98,14 @@ std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) 
         out.insert(out.end(), mesh.positions.size() * 4, 255);
     }
     putArray(out, mesh.indices);
+    if (atlas) {
+        putArray(out, mesh.uvs);
+        put(out, static_cast<std::uint8_t>(mesh.atlas->mask ? 1 : 0));
+        put(out, static_cast<std::uint64_t>(mesh.atlas->mimeType.size()));
+        out.insert(out.end(), mesh.atlas->mimeType.begin(), mesh.atlas->mimeType.end());
+        put(out, static_cast<std::uint64_t>(mesh.atlas->encoded.size()));
+        putArray(out, mesh.atlas->encoded);
+    }
     put(out, hashBytes(out.data(), out.size()));
     return out;
 }
@@ -98,6 +130,7 @@ std::optional<ProxyMesh> decodeProxy(std::uint64_t key, const std::vector<std::u
     if (!r.getArray(m.positions, vertices)) return std::nullopt;
     if ((flags & kHasNormals) && !r.getArray(m.normals, vertices)) return std::nullopt;
     if (!r.getArray(m.colors, vertices) || !r.getArray(m.indices, indices)) return std::nullopt;
+    if ((flags & kHasAtlas) && !readAtlas(r, m, vertices)) return std::nullopt;
     if (r.position() + 8 != bytes.size()) return std::nullopt;
     for (std::uint32_t i : m.indices) {
         if (i >= vertices) return std::nullopt;

@@ -6,7 +6,8 @@
 // exactly when something that can change its proxy changes, and is known before any baking.
 //
 // Files: `<dir>/<16 hex digits>.hlodproxy`: magic, format version, key, counts, origin, the
-// vertex streams, indices and a checksum over everything before it. Writes go to a unique
+// vertex streams, indices, the baked atlas when there is one (uvs, mask flag, MIME type, the
+// encoded JPEG/PNG; decoded on load) and a checksum over everything before it. Writes go to a unique
 // temporary file in the same folder and are renamed into place, so a reader (another thread,
 // another process, a rerun after a crash or cancellation) sees a complete file or none.
 // A file that is truncated, has a bad checksum or belongs to another key is a miss (and is

@@ -8,12 +8,25 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "pipeline/scene/RgbaImage.h"
+
 namespace hlod {
+
+// A proxy's baked base-colour atlas (pipeline/proxy/atlas/BakeAtlas.h): the encoded file as it
+// is written to the tile (JPEG when opaque, PNG when it carries a cut-out) and the image
+// decoded from exactly those bytes (so a cached proxy and a freshly baked one look the same).
+struct ProxyAtlas {
+    std::vector<std::uint8_t> encoded;
+    std::string mimeType;                   // "image/jpeg" or "image/png"
+    std::shared_ptr<const RgbaImage> image; // sRGB RGBA, top row first
+    bool mask = false;                      // alpha cut-out at 0.5 (glTF alphaMode MASK)
+};
 
 struct ProxyMesh {
     glm::dvec3 origin{0.0};
@@ -21,10 +34,16 @@ struct ProxyMesh {
     std::vector<glm::vec3> normals;     // empty, or one per position
     std::vector<glm::u8vec4> colors;    // one per position (linear RGBA, 255 = 1.0)
     std::vector<std::uint32_t> indices; // 3 per triangle, counter-clockwise = front
+    // With a baked atlas: one uv per position (v = 0 at the image top, as glTF) and the atlas,
+    // which then carries the whole base colour (vertex colours stay for the parents' bakes
+    // and the vertex-colour fallback, but are not drawn with it).
+    std::vector<glm::vec2> uvs;
+    std::shared_ptr<const ProxyAtlas> atlas;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     std::size_t vertexCount() const { return positions.size(); }
     bool empty() const { return indices.empty(); }
+    bool hasAtlas() const { return atlas && atlas->image && uvs.size() == positions.size(); }
 };
 
 // How an inner node's proxy is made from its children (see DecimateProxy.h, RemeshProxy.h,

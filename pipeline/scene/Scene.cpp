@@ -50,6 +50,18 @@ Id Scene::addMaterial(Material material) {
     return static_cast<Id>(materials.size() - 1);
 }
 
+Id Scene::addTexture(Texture texture) {
+    textures.push_back(std::move(texture));
+    return static_cast<Id>(textures.size() - 1);
+}
+
+const RgbaImage* Scene::textureImage(Id material) const {
+    if (material >= materials.size()) return nullptr;
+    const Id t = materials[material].texture;
+    if (t >= textures.size() || !textures[t].image || textures[t].image->empty()) return nullptr;
+    return textures[t].image.get();
+}
+
 Id Scene::addInstance(Id mesh, Id node) {
     instances.push_back(MeshInstance{mesh, node});
     return static_cast<Id>(instances.size() - 1);
@@ -73,6 +85,7 @@ void Scene::append(Scene&& other, const std::string& name) {
     const Id nodeBase = static_cast<Id>(nodes.size());
     const Id meshBase = static_cast<Id>(meshes.size());
     const Id matBase = static_cast<Id>(materials.size());
+    const Id texBase = static_cast<Id>(textures.size());
     // other's root becomes a named child of our root.
     for (std::size_t i = 0; i < other.nodes.size(); ++i) {
         Node n = std::move(other.nodes[i]);
@@ -91,8 +104,12 @@ void Scene::append(Scene&& other, const std::string& name) {
         m.material += matBase;
         meshes.push_back(std::move(m));
     }
-    for (Material& m : other.materials)
+    for (Material& m : other.materials) {
+        if (m.texture != kNoId) m.texture += texBase;
         materials.push_back(std::move(m));
+    }
+    for (Texture& t : other.textures)
+        textures.push_back(std::move(t));
     for (const MeshInstance& inst : other.instances) {
         instances.push_back(MeshInstance{inst.mesh + meshBase, inst.node + nodeBase});
     }

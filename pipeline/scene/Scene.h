@@ -9,17 +9,34 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "pipeline/scene/Aabb.h"
+#include "pipeline/scene/RgbaImage.h"
 
 namespace hlod {
 
 using Id = std::uint32_t;
 inline constexpr Id kNoId = 0xffffffffu;
+
+// A base colour texture as imported: decoded once, shared by every material that names it.
+// `image` is null when the file could not be read or decoded; `error` then says why, naming
+// the file ("tr-road1.rgb: RLE row 7 runs past its end"), and materials using it fall back to
+// their base colour (their texture mean stays white).
+struct Texture {
+    std::string name;                       // file name, or "image N" when embedded
+    std::filesystem::path file;             // absolute path; empty when embedded in the source
+    std::shared_ptr<const RgbaImage> image; // immutable, shared by copies of the scene
+    std::string error;                      // why `image` is null; empty otherwise
+};
+
+// How a material's alpha is used (glTF 2.0 alphaMode): ignored, cut out at `alphaCutoff`
+// (texels below it are not drawn, the rest opaque), or blended.
+enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
 struct Material {
     std::string name;
@@ -27,6 +44,9 @@ struct Material {
     std::filesystem::path baseColorTexture; // absolute path, empty when none or embedded
     bool hasTexture = false;                // a base colour texture exists (file or embedded)
     glm::vec4 textureMean{1.0f};            // mean RGBA of that texture (decoded on import)
+    Id texture = kNoId;                     // index into Scene::textures, kNoId when none
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f; // AlphaMode::Mask only
 
     // The colour a proxy uses for this material: base colour times the texture's mean.
     glm::vec4 effectiveColor() const { return baseColor * textureMean; }
@@ -79,6 +99,7 @@ public:
     std::vector<Node> nodes; // nodes[0] is the root
     std::vector<Mesh> meshes;
     std::vector<Material> materials; // materials[0] always exists (default grey)
+    std::vector<Texture> textures;   // referenced by Material::texture
     std::vector<MeshInstance> instances;
     std::vector<std::filesystem::path> sourceFiles;
     // Files the source files pulled in (glTF buffers and images, material libraries...),
@@ -91,6 +112,9 @@ public:
     Id addNode(std::string name, Id parent, const glm::dmat4& local = glm::dmat4(1.0));
     Id addMesh(Mesh mesh);
     Id addMaterial(Material material);
+    Id addTexture(Texture texture);
+    // The decoded base colour texture of `material`, null when it has none or it is unreadable.
+    const RgbaImage* textureImage(Id material) const;
     Id addInstance(Id mesh, Id node);
 
     // Recomputes Node::world from Node::local, root first.

@@ -102,6 +102,19 @@ std::string writeSceneBinary(const Scene& s) {
         w.str(m.baseColorTexture.string());
         w.pod<std::uint8_t>(m.hasTexture ? 1 : 0);
         w.pod(m.textureMean);
+        w.pod(m.texture);
+        w.pod(m.alphaMode);
+        w.pod(m.alphaCutoff);
+    }
+    w.pod<std::uint64_t>(s.textures.size());
+    for (const Texture& t : s.textures) {
+        w.str(t.name);
+        w.str(t.file.string());
+        w.str(t.error);
+        const bool image = t.image != nullptr;
+        w.pod<std::int32_t>(image ? t.image->width : -1);
+        w.pod<std::int32_t>(image ? t.image->height : -1);
+        if (image) w.array(t.image->pixels);
     }
     w.array(s.instances);
     w.pod<std::uint64_t>(s.sourceFiles.size());
@@ -141,6 +154,28 @@ Scene readSceneBinary(const std::string& bytes, const std::filesystem::path& ori
         m.baseColorTexture = r.str();
         m.hasTexture = r.pod<std::uint8_t>() != 0;
         m.textureMean = r.pod<glm::vec4>();
+        m.texture = r.pod<Id>();
+        m.alphaMode = r.pod<AlphaMode>();
+        m.alphaCutoff = r.pod<float>();
+        if (m.alphaMode > AlphaMode::Blend) r.fail();
+    }
+    s.textures.resize(r.count(24));
+    for (Texture& t : s.textures) {
+        t.name = r.str();
+        t.file = r.str();
+        t.error = r.str();
+        const auto w = r.pod<std::int32_t>(), h = r.pod<std::int32_t>();
+        if (w < 0) continue;
+        auto image = std::make_shared<RgbaImage>();
+        image->width = w;
+        image->height = h;
+        image->pixels = r.array<std::uint8_t>();
+        if (image->pixels.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4)
+            r.fail();
+        t.image = std::move(image);
+    }
+    for (const Material& m : s.materials) {
+        if (m.texture != kNoId && m.texture >= s.textures.size()) r.fail();
     }
     s.instances = r.array<MeshInstance>();
     s.sourceFiles.resize(r.count(8));

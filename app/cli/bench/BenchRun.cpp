@@ -126,6 +126,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     bake.proxyRatio = o.proxyRatio;
     bake.threads = o.threads;
     bake.cacheDir = o.cacheDir;
+    bake.atlas.enabled = o.proxyTextures;
     for (Config& c : configs) {
         if (c.kind != Kind::Hlod) continue;
         HlodSettings settings;
@@ -172,6 +173,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     std::vector<glm::dvec3> instCenter(nInst);
     std::vector<double> instRadius(nInst);
     std::vector<glm::vec4> instColor(nInst);
+    std::vector<SurfaceLook> instLook(nInst);
     for (Id i = 0; i < nInst; ++i) {
         const Aabb b = scene.instanceBounds(i);
         instCenter[i] = b.center();
@@ -180,6 +182,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
         instColor[i] = mesh.material < scene.materials.size()
                            ? scene.materials[mesh.material].effectiveColor()
                            : glm::vec4(0.8f);
+        instLook[i] = lookOf(scene, mesh.material);
     }
 
     // Renderer: one layer per configuration, one actor per drawable.
@@ -203,7 +206,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                     tris[n] = mesh.triangleCount();
                     if (tris[n] > 0)
                         c.nodeDrawable[n] = renderer.addMesh(
-                            c.layer, mesh, scene.instanceTransform(i), instColor[i]);
+                            c.layer, mesh, scene.instanceTransform(i), instColor[i], instLook[i]);
                 } else {
                     const ProxyMesh& proxy = c.build->bake.nodes[n].proxy;
                     tris[n] = proxy.triangleCount();
@@ -219,11 +222,11 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                 const Id m = scene.instances[i].mesh;
                 const glm::dmat4& world = scene.instanceTransform(i);
                 c.instanceDrawables[i].push_back(
-                    renderer.addMesh(c.layer, scene.meshes[m], world, instColor[i]));
+                    renderer.addMesh(c.layer, scene.meshes[m], world, instColor[i], instLook[i]));
                 if (c.kind == Kind::Dlod) {
                     for (const Mesh& level : chains[m])
                         c.instanceDrawables[i].push_back(
-                            renderer.addMesh(c.layer, level, world, instColor[i]));
+                            renderer.addMesh(c.layer, level, world, instColor[i], instLook[i]));
                 }
             }
         }
@@ -375,7 +378,10 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     extra["size"] = {o.width, o.height};
     extra["screen_size_px"] = o.screenSize;
     extra["selection_screen_size_px"] = selectionS;
-    extra["shading"] = o.shading == Shading::Geometry ? "geometry" : "colour";
+    extra["shading"] = o.shading == Shading::Geometry ? "geometry"
+                       : o.shading == Shading::Colour ? "colour"
+                                                      : "textured";
+    extra["proxy_textures"] = o.proxyTextures;
     extra["psnr_cap_db"] = kPsnrCapDb;
     extra["camera_path"] = o.pathFile ? o.pathFile->string() : std::string("automatic");
     extra["statistics"] = nlohmann::json::array();

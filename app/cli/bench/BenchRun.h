@@ -50,6 +50,7 @@ struct BenchOptions {
     int threads = 0;
     Shading shading = Shading::Geometry;
     std::filesystem::path cacheDir; // proxy cache, empty = none
+    bool proxyTextures = true;      // bake base-colour atlases (drawn in Textured shading)
 };
 
 inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",

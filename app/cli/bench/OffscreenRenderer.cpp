@@ -25,10 +25,14 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "pipeline/core/Error.h"
+#include "widgets/VtkSurfaceLook.h"
 
 namespace hlod::cli {
 
 namespace {
+
+using widgets::applyAlphaMode;
+using widgets::makeVtkTexture;
 
 float toSrgb(float c) {
     c = std::clamp(c, 0.0f, 1.0f);
@@ -39,11 +43,15 @@ unsigned char toByte(float c) {
     return static_cast<unsigned char>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
 }
 
+// `factor` multiplies the vertex colours (Textured shading: the material's base colour factor,
+// since VTK ignores the actor colour when a mesh has scalars); RGBA scalars when `withAlpha`.
 vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
                                       const std::vector<glm::vec3>& normals,
                                       const std::vector<std::uint32_t>& indices,
                                       const std::vector<glm::vec4>* colorsLinear,
-                                      const std::vector<glm::u8vec4>* colors8) {
+                                      const std::vector<glm::u8vec4>* colors8,
+                                      const std::vector<glm::vec2>* uvs = nullptr,
+                                      glm::vec4 factor = glm::vec4(1.0f), bool withAlpha = false) {
     const auto nv = static_cast<vtkIdType>(positions.size());
     const auto nt = static_cast<vtkIdType>(indices.size() / 3);
     vtkNew<vtkFloatArray> points;
@@ -75,19 +83,29 @@ vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
     }
     if ((colorsLinear && colorsLinear->size() == positions.size()) ||
         (colors8 && colors8->size() == positions.size())) {
+        const int comps = withAlpha ? 4 : 3;
         vtkNew<vtkUnsignedCharArray> c;
         c->SetName("Colors");
-        c->SetNumberOfComponents(3);
+        c->SetNumberOfComponents(comps);
         c->SetNumberOfTuples(nv);
         unsigned char* p = c->GetPointer(0);
         for (vtkIdType i = 0; i < nv; ++i) {
-            const glm::vec4 lin = colorsLinear
-                                      ? (*colorsLinear)[static_cast<std::size_t>(i)]
-                                      : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f;
+            const glm::vec4 lin =
+                factor * (colorsLinear ? (*colorsLinear)[static_cast<std::size_t>(i)]
+                                       : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f);
             for (int k = 0; k < 3; ++k)
-                p[3 * i + k] = toByte(toSrgb(lin[k]));
+                p[comps * i + k] = toByte(toSrgb(lin[k]));
+            if (withAlpha) p[comps * i + 3] = toByte(lin.a);
         }
         poly->GetPointData()->SetScalars(c);
+    }
+    if (uvs && uvs->size() == positions.size()) {
+        vtkNew<vtkFloatArray> t;
+        t->SetName("TCoords");
+        t->SetNumberOfComponents(2);
+        t->SetNumberOfTuples(nv);
+        std::copy_n(&(*uvs)[0].x, nv * 2, t->GetPointer(0));
+        poly->GetPointData()->SetTCoords(t);
     }
     return poly;
 }
@@ -112,6 +130,22 @@ struct OffscreenRenderer::Impl {
     // Geometry shared by every drawable of the same source mesh (key: Mesh address + colour
     // mode), so a mesh instanced N times is one polydata.
     std::map<std::pair<const void*, bool>, vtkSmartPointer<vtkPolyData>> meshes;
+    std::map<const RgbaImage*, vtkSmartPointer<vtkTexture>> textures; // uploaded once each
+
+    vtkTexture* textureFor(const RgbaImage& image) {
+        auto& texture = textures[&image];
+        if (texture) return texture;
+        texture = makeVtkTexture(image);
+        return texture;
+    }
+
+    // Textured shading: the material's texture and cut-out on the actor (see SurfaceLook).
+    void applyLook(vtkActor& actor, const SurfaceLook& look, bool hasUvs) {
+        if (look.texture && hasUvs) actor.SetTexture(textureFor(*look.texture));
+        applyAlphaMode(actor, look.alphaMode, look.alphaCutoff);
+        if (look.alphaMode == AlphaMode::Blend)
+            actor.GetProperty()->SetOpacity(std::clamp(double(look.factor.a), 0.05, 1.0));
+    }
 
     vtkSmartPointer<vtkActor> makeActor(vtkPolyData* poly, const glm::vec4& color,
                                         bool vertexColors) {
@@ -125,6 +159,8 @@ struct OffscreenRenderer::Impl {
         vtkProperty* p = actor->GetProperty();
         if (shading == Shading::Geometry) {
             p->SetColor(0.78, 0.78, 0.76);
+        } else if (vertexColors) {
+            p->SetColor(1.0, 1.0, 1.0);
         } else {
             p->SetColor(toSrgb(color.r), toSrgb(color.g), toSrgb(color.b));
         }
@@ -189,17 +225,23 @@ int OffscreenRenderer::addLayer() {
 }
 
 int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& world,
-                               const glm::vec4& color) {
-    const bool colour = impl_->shading == Shading::Colour;
+                               const glm::vec4& color, const SurfaceLook& look) {
+    const bool colour = impl_->shading != Shading::Geometry;
+    const bool textured = impl_->shading == Shading::Textured;
     const bool vertexColors = colour && mesh.colors.size() == mesh.positions.size();
+    const bool hasUvs = textured && look.texture && mesh.uvs.size() == mesh.positions.size();
     auto& poly = impl_->meshes[{&mesh, vertexColors}];
-    if (!poly)
+    if (!poly) {
+        // Textured: the factor goes into the vertex colours (one material per Mesh, so the
+        // shared polydata is right for every instance).
         poly = makePoly(mesh.positions, mesh.normals, mesh.indices,
-                        vertexColors ? &mesh.colors : nullptr, nullptr);
-    // Vertex colours are multiplied by the material in Colour mode (VTK: actor colour is
-    // ignored with scalars, so the multiplication happens when the polydata is made; shared
-    // vertex-coloured meshes therefore use the material colour via the actor only).
-    auto actor = impl_->makeActor(poly, color, vertexColors);
+                        vertexColors ? &mesh.colors : nullptr, nullptr,
+                        textured ? &mesh.uvs : nullptr, textured ? look.factor : glm::vec4(1.0f),
+                        textured);
+    }
+    // Colour: vertex colours replace the actor colour (VTK ignores it with scalars).
+    auto actor = impl_->makeActor(poly, textured ? look.factor : color, vertexColors);
+    if (textured) impl_->applyLook(*actor, look, hasUvs);
     if (world != glm::dmat4(1.0)) actor->SetUserMatrix(toVtk(world));
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
@@ -208,15 +250,36 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
 }
 
 int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
-    const bool colour = impl_->shading == Shading::Colour;
+    const bool colour = impl_->shading != Shading::Geometry;
+    const bool atlas = impl_->shading == Shading::Textured && proxy.hasAtlas();
+    // With an atlas the texture carries the whole base colour (ProxyMesh.h).
     auto poly = makePoly(proxy.positions, proxy.normals, proxy.indices, nullptr,
-                         colour ? &proxy.colors : nullptr);
-    auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !proxy.colors.empty());
+                         colour && !atlas ? &proxy.colors : nullptr, atlas ? &proxy.uvs : nullptr);
+    auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !atlas && !proxy.colors.empty());
+    if (atlas) {
+        SurfaceLook look;
+        look.texture = proxy.atlas->image.get();
+        look.alphaMode = proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque;
+        impl_->applyLook(*actor, look, true);
+    } else if (impl_->shading == Shading::Textured) {
+        applyAlphaMode(*actor, AlphaMode::Opaque, 0.5f);
+    }
     actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
     list.push_back(actor);
     return static_cast<int>(list.size()) - 1;
+}
+
+SurfaceLook lookOf(const Scene& scene, Id material) {
+    SurfaceLook look;
+    if (material >= scene.materials.size()) material = 0;
+    const Material& m = scene.materials[material];
+    look.factor = m.baseColor;
+    look.texture = scene.textureImage(material);
+    look.alphaMode = m.alphaMode;
+    look.alphaCutoff = m.alphaCutoff;
+    return look;
 }
 
 void OffscreenRenderer::setVisible(int layer, const std::vector<int>& drawables) {

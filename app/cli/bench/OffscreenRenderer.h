@@ -19,7 +19,24 @@
 
 namespace hlod::cli {
 
-enum class Shading { Geometry, Colour };
+// Geometry: one grey for everything. Colour: material colour (base colour x texture mean) x
+// vertex colour, as a proxy with vertex colours shows it. Textured: base colour factor x base
+// colour texture x vertex colour, alpha cut-out (MASK) honoured, what an engine draws.
+// All three use the same simple lighting (ambient + diffuse from a headlight), colours given
+// to the GPU as sRGB values (products of sRGB values are close to the sRGB of the product).
+enum class Shading { Geometry, Colour, Textured };
+
+// What Textured shading needs of a surface. `texture` must outlive the renderer (it is shared
+// by every drawable using it, uploaded once with mipmaps, repeat wrap, linear filtering).
+struct SurfaceLook {
+    glm::vec4 factor{1.0f};            // linear RGBA base colour factor
+    const RgbaImage* texture = nullptr; // sRGB RGBA, top row first; null = untextured
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+};
+
+// The look of a scene material.
+SurfaceLook lookOf(const Scene& scene, Id material);
 
 class OffscreenRenderer {
 public:
@@ -29,9 +46,13 @@ public:
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
 
     int addLayer();
-    // A mesh placed with `world`; `color` used in Colour shading (vertex colours multiply it).
-    // Meshes are converted once and shared by every drawable that uses the same Mesh object.
-    int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color);
+    // A mesh placed with `world`; `color` used in Colour shading (vertex colours multiply it),
+    // `look` in Textured shading. Meshes are converted once and shared by every drawable that
+    // uses the same Mesh object.
+    int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color,
+                const SurfaceLook& look = {});
+    // A proxy: its vertex colours in Colour shading; its baked atlas in Textured shading
+    // (vertex colours when it has none). The atlas image must outlive the renderer.
     int addProxy(int layer, const ProxyMesh& proxy);
 
     // Makes exactly `drawables` of `layer` visible (indices returned by add*).

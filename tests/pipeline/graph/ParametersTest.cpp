@@ -24,7 +24,7 @@ TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
         "--screen-size", "--pixel-error", "--fov",          "--viewport-height",
         "--threads",     "--cache",       "--no-cache",     "--no-dlod",
         "--deflection",  "--brep-unit",   "--geo",          "-o",
-        "--compression"};
+        "--compression", "--proxy-textures"};
     std::set<std::string> keys, declared;
     for (const ParamDecl& d : parameterDeclarations()) {
         EXPECT_TRUE(keys.insert(d.key).second) << d.key << " declared twice";

@@ -1,0 +1,92 @@
+// See AtlasStep.h.
+#include "pipeline/proxy/AtlasStep.h"
+
+#include "pipeline/proxy/BakeFrame.h"
+#include "pipeline/proxy/atlas/BakeAtlas.h"
+
+namespace hlod {
+
+namespace {
+
+constexpr std::uint64_t kAtlasFormatVersion = 1;
+
+// Leaves under `id`, with `at` the position of `id`'s origin in the target node's frame.
+void addSubtree(SourceSurfaces& out, const Scene& scene, const ClusterTree& tree, Id id,
+                const glm::dvec3& at, const std::vector<NodeBake>& nodes) {
+    const double grid = offsetGrid(nodes[id].errorBudget);
+    const glm::dvec3 origin = nodes[id].proxy.origin;
+    for (Id c : tree.nodes[id].children) {
+        const ClusterNode& child = tree.nodes[c];
+        if (child.isLeaf()) {
+            if (child.instance == kNoId) continue;
+            const glm::dmat4& world = scene.nodes[scene.instances[child.instance].node].world;
+            const glm::dvec3 offset = quantizeOffset(glm::dvec3(world[3]) - origin, grid);
+            out.addInstance(scene, child.instance, glm::dmat3(world), at + offset);
+        } else {
+            const glm::dvec3 offset = quantizeOffset(nodes[c].proxy.origin - origin, grid);
+            addSubtree(out, scene, tree, c, at + offset, nodes);
+        }
+    }
+}
+
+} // namespace
+
+SourceSurfaces gatherNodeSources(const Scene& scene, const ClusterTree& tree, Id node,
+                                 const std::vector<NodeBake>& nodes) {
+    SourceSurfaces out;
+    addSubtree(out, scene, tree, node, glm::dvec3(0.0), nodes);
+    return out;
+}
+
+ProxyMesh bakeNodeAtlas(const ProxyMesh& proxy, const Scene& scene, const ClusterTree& tree,
+                        Id node, const std::vector<NodeBake>& nodes, const BakeParams& params,
+                        TextureMips& mips) {
+    if (!params.atlas.enabled || proxy.empty()) return proxy;
+    const SourceSurfaces sources = gatherNodeSources(scene, tree, node, nodes);
+    const double texelSize = nodes[node].errorBudget / params.screen.pixelError;
+    ProxyMesh out =
+        bakeAtlas(proxy, sources, nodes[node].errorBudget, texelSize, params.atlas, mips);
+    out.origin = proxy.origin;
+    return out;
+}
+
+void hashAtlasOptions(ContentHash& h, const AtlasOptions& options) {
+    if (!options.enabled) return;
+    h.addValue(kAtlasFormatVersion);
+    h.addValue(options.maxSize);
+    h.addValue(options.padding);
+    h.addValue(options.jpegQuality);
+    h.addValue(options.maxNormalDegrees);
+    h.addValue(options.skipUntextured);
+}
+
+std::vector<std::uint64_t> textureHashes(const Scene& scene) {
+    std::vector<std::uint64_t> out;
+    for (const Texture& t : scene.textures) {
+        if (!t.image) {
+            out.push_back(0);
+            continue;
+        }
+        ContentHash h(0x746578); // "tex"
+        h.addValue(t.image->width);
+        h.addValue(t.image->height);
+        h.addVector(t.image->pixels);
+        out.push_back(h.digest());
+    }
+    return out;
+}
+
+std::uint64_t leafLookHash(const Scene& scene, Id instance,
+                           const std::vector<std::uint64_t>& textureHash) {
+    const Mesh& mesh = scene.meshes[scene.instances[instance].mesh];
+    const Material& m = scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0];
+    ContentHash h(0x6c6f6f6b); // "look"
+    h.addVector(mesh.uvs);
+    h.addValue(m.baseColor);
+    h.addValue(m.alphaMode);
+    h.addValue(m.alphaCutoff);
+    h.addValue(m.texture < textureHash.size() ? textureHash[m.texture] : std::uint64_t(0));
+    return h.digest();
+}
+
+} // namespace hlod
