@@ -1,5 +1,6 @@
 # Every dependency comes from Debian 12's packages (scripts/install-deps.sh installs them).
 find_package(Threads REQUIRED)
+find_package(ZLIB REQUIRED)
 find_package(glm REQUIRED)
 find_package(TBB REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)

@@ -3,7 +3,6 @@
 #include "pipeline/cluster/Cluster.h"
 
 #include "pipeline/cluster/ClusterDriver.h"
-#include "pipeline/cluster/LevelGrowth.h"
 #include "pipeline/cluster/LevelMerger.h"
 #include "pipeline/cluster/OctreeClusterer.h"
 #include "pipeline/cluster/OriginalHierarchyClusterer.h"
@@ -15,15 +14,11 @@ ClusterTree buildClusterTree(const Scene& scene, const ClusterParams& params,
     validateConstraints(params, scene.instances.size());
     switch (params.volume) {
     case VolumeType::Sphere:
-        return coarsenLevels(buildConstrainedTree(scene, params,
-                                                  CostModel(VolumeType::Sphere, 0.0), mergeLevels,
-                                                  progress),
-                             params.levelGrowth);
+        return buildConstrainedTree(scene, params, CostModel(VolumeType::Sphere, 0.0), mergeLevels,
+                                    progress);
     case VolumeType::Aabb:
-        return coarsenLevels(buildConstrainedTree(scene, params,
-                                                  CostModel(VolumeType::Aabb, params.k),
-                                                  mergeLevels, progress),
-                             params.levelGrowth);
+        return buildConstrainedTree(scene, params, CostModel(VolumeType::Aabb, params.k),
+                                    mergeLevels, progress);
     case VolumeType::Octree:
         // The baselines have no cost of their own: their nodes are boxes, so fill and cost are
         // reported with the AABB model without the proportion term (k = 0).

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pipeline/bounds/InstanceBounds.h"
+#include "pipeline/cluster/LevelGrowth.h"
 #include "pipeline/cluster/LocalConstraints.h"
 #include "pipeline/core/Error.h"
 
@@ -84,6 +85,9 @@ ClusterTree buildConstrainedTree(const Scene& scene, const ClusterParams& params
     std::iota(units.begin(), units.end(), Id{0});
     const Id root = units.empty() ? kNoId : merge(builder, units, params.maxChildren, progress);
     ClusterTree tree = builder.finish(root, params.volume, params.k);
+    // Levels at least levelGrowth apart (the merging trees only; the baselines keep theirs).
+    if (params.volume == VolumeType::Sphere || params.volume == VolumeType::Aabb)
+        tree = coarsenLevels(tree, params.levelGrowth);
     if (params.lockedGroups.empty() && params.excluded.empty()) return tree;
     return applyLocalConstraints(std::move(tree), params, model, minExtent);
 }

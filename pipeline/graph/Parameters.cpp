@@ -78,7 +78,7 @@ void addImportAndCluster(std::vector<ParamDecl>& v) {
                             "--max-children"),
                        2, 1024));
     v.push_back(ranged(decl("level_growth", "Level growth", T::Double, N::Cluster,
-                            cp.levelGrowth, "× diameter",
+                            kDefaultLevelGrowth, "× diameter",
                             "Sphere and AABB trees: a cluster is at least this many times wider "
                             "than the clusters below it (thinner levels are dissolved), so each "
                             "proxy's error budget grows enough to drop triangles; 1 keeps every "

@@ -12,6 +12,7 @@
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
+#include <future>
 #include <mutex>
 #include <unordered_map>
 
@@ -180,7 +181,9 @@ struct BakeRun {
     // Per dissolved node: the nodes whose representations stand in for it (its inputs).
     std::vector<std::vector<Id>> standIns;
     std::mutex bakedMutex;
-    std::unordered_map<std::uint64_t, Id> bakedByKey; // this run's proxies, by key
+    // This run's proxies by key, finished or in the making: a node whose key another node is
+    // baking waits for that proxy instead of baking a second copy.
+    std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> bakedByKey;
     std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0};
     tbb::task_group group;
     TextureMips mips; // source texture pyramids, shared by every node's atlas
@@ -235,18 +238,23 @@ struct BakeRun {
     }
 
     // This run's earlier proxy with the same key, or the disk cache's.
-    std::optional<ProxyMesh> reuse(std::uint64_t key) {
+    // This run's proxy with the same key (waiting while another node makes it), or the disk
+    // cache's; otherwise `owner` is set and the caller makes it and must fulfil it.
+    std::optional<ProxyMesh> reuse(std::uint64_t key,
+                                   std::shared_ptr<std::promise<ProxyMesh>>& owner) {
+        std::shared_future<ProxyMesh> known;
         {
             const std::lock_guard lock(bakedMutex);
             const auto it = bakedByKey.find(key);
-            if (it != bakedByKey.end()) return result.nodes[it->second].proxy;
+            if (it != bakedByKey.end()) {
+                known = it->second;
+            } else {
+                owner = std::make_shared<std::promise<ProxyMesh>>();
+                bakedByKey.emplace(key, owner->get_future().share());
+            }
         }
+        if (known.valid()) return known.get(); // rethrows when the maker failed
         return cache.load(key);
-    }
-
-    void remember(Id id) {
-        const std::lock_guard lock(bakedMutex);
-        bakedByKey.emplace(result.nodes[id].key, id);
     }
 
     // The economy's decision (ProxyBaker.h), once the proxy is known.
@@ -274,28 +282,34 @@ struct BakeRun {
         const std::vector<AggregatePart> parts = partsOf(id, inputs);
         nb.inputTriangles = aggregateTriangleCount(scene, parts);
         const glm::dvec3 origin = nb.proxy.origin;
-        bool store = false;
-        if (std::optional<ProxyMesh> known = reuse(nb.key)) {
-            nb.proxy = std::move(*known);
-            nb.reused = true;
-            ++reused;
-        } else {
-            nb.proxy =
-                makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params, progress);
-            store = true;
-            ++baked;
+        std::shared_ptr<std::promise<ProxyMesh>> owner;
+        try {
+            bool store = false;
+            if (std::optional<ProxyMesh> known = reuse(nb.key, owner)) {
+                nb.proxy = std::move(*known);
+                nb.reused = true;
+                ++reused;
+            } else {
+                nb.proxy = makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params,
+                                     progress);
+                store = true;
+                ++baked;
+            }
+            nb.proxy.origin = origin;
+            decide(id, std::move(inputs));
+            // The atlas once the geometry is final and kept (AtlasStep.h); a reused proxy may
+            // lack it when it was dissolved the time it was baked (a lock changes the decision).
+            if (params.atlas.enabled && !nb.dissolved && nb.hasProxy && !nb.proxy.hasAtlas()) {
+                progress.throwIfCancelled();
+                nb.proxy = bakeNodeAtlas(nb.proxy, scene, tree, id, result.nodes, params, mips);
+                store = true;
+            }
+            if (store) cache.store(nb.key, nb.proxy);
+            if (owner) owner->set_value(nb.proxy);
+        } catch (...) {
+            if (owner) owner->set_exception(std::current_exception());
+            throw;
         }
-        nb.proxy.origin = origin;
-        decide(id, std::move(inputs));
-        // The atlas once the geometry is final and kept (AtlasStep.h); a reused proxy may lack
-        // it when it was dissolved the time it was baked (a lock changes the decision).
-        if (params.atlas.enabled && !nb.dissolved && nb.hasProxy && !nb.proxy.hasAtlas()) {
-            progress.throwIfCancelled();
-            nb.proxy = bakeNodeAtlas(nb.proxy, scene, tree, id, result.nodes, params, mips);
-            store = true;
-        }
-        if (store) cache.store(nb.key, nb.proxy);
-        remember(id);
         const std::size_t finished = ++done;
         progress.emit(ProgressInfo{"bake", finished, result.innerNodes,
                                    "baked " + std::to_string(baked.load()) + ", reused " +

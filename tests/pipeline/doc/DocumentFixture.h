@@ -16,6 +16,10 @@ protected:
         PipelineGraph& g = doc.graph();
         g.setParam(doc.clusterNode(), "volume", std::string("aabb"));
         g.setParam(doc.clusterNode(), "k", 0.0);
+        // The thesis' merges and every proxy kept: the trees the tests describe (level growth
+        // and the proxy economy have tests of their own).
+        g.setParam(doc.clusterNode(), "level_growth", 1.0);
+        g.setParam(doc.bakeNode(), "proxy_ratio", 1.0);
         g.setParam(doc.bakeNode(), "cache_dir", (tmp / "cache").string());
         g.setParam(doc.bakeNode(), "threads", 2);
     }

@@ -51,18 +51,18 @@ TEST_F(HandEditRerun, ExcludedAndMovedInstancesKeepTheirPlace) {
 }
 
 TEST_F(HandEditRerun, OnlyTheEditedClustersAndTheirAncestorsAreRebaked) {
-    EXPECT_EQ(bake().baked, 5u);
-    // Merging DE and FG: the locked group is clustered on its own into DE, FG and {DE, FG};
-    // DE and FG keep their content (reused), {DE, FG} is new. The rest are A, B, C and the
-    // group: the level budget is now the median partner cost 2 (A-B, B-A, C-B), so AB forms
-    // first and C joins one level up (LevelMergerTest's rule), then the root: AB, {AB, C} and
-    // the root are new. 6 inner nodes: 4 baked, 2 reused.
+    // DE and FG are translated copies (two cubes 2 m apart): one bake serves both (BakeFrame.h).
+    EXPECT_EQ(bake().baked, 4u);
+    EXPECT_EQ(bake().reused, 1u);
+    // Merging DE and FG changes the tree only there (LocalConstraints.h): DE and FG stay and a
+    // locked {DE, FG} takes their place under the root. 5 inner nodes: ABC, DE, FG, {DE, FG}
+    // and the root; {DE, FG} and the root are new, ABC, DE and FG come from the cache.
     doc.execute(std::make_unique<MergeClusters>(doc.clusterNode(),
                                                 std::vector<InstanceSet>{{3, 4}, {5, 6}}));
     const BakeResult& merged = bake();
-    EXPECT_EQ(merged.innerNodes, 6u);
-    EXPECT_EQ(merged.baked, 4u);
-    EXPECT_EQ(merged.reused, 2u);
+    EXPECT_EQ(merged.innerNodes, 5u);
+    EXPECT_EQ(merged.baked, 2u);
+    EXPECT_EQ(merged.reused, 3u);
     EXPECT_TRUE(merged.nodes[findCluster(tree(), {3, 4})].reused);
     EXPECT_FALSE(merged.nodes[findCluster(tree(), {3, 4, 5, 6})].reused);
     // Undo brings the original tree back: every proxy is in the cache.

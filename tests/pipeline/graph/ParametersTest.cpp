@@ -24,7 +24,7 @@ TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
         "--screen-size", "--pixel-error", "--fov",          "--viewport-height",
         "--threads",     "--cache",       "--no-cache",     "--no-dlod",
         "--deflection",  "--brep-unit",   "--geo",          "-o",
-        "--compression", "--proxy-textures"};
+        "--compression", "--proxy-textures", "--proxy-ratio", "--level-growth"};
     std::set<std::string> keys, declared;
     for (const ParamDecl& d : parameterDeclarations()) {
         EXPECT_TRUE(keys.insert(d.key).second) << d.key << " declared twice";
@@ -43,6 +43,8 @@ TEST(Parameters, DefaultsAreThoseOfThePipelineStructs) {
     EXPECT_EQ(s.cluster.volume, cp.volume);
     EXPECT_EQ(s.cluster.k, cp.k);
     EXPECT_EQ(s.cluster.maxChildren, cp.maxChildren);
+    // Level growth: the library keeps the thesis' merges, the tool coarsens (LevelGrowth.h).
+    EXPECT_EQ(s.cluster.levelGrowth, kDefaultLevelGrowth);
     EXPECT_EQ(s.bake.screen.screenSize, 300.0); // DESIGN.md: S defaults to 300 px
     EXPECT_EQ(s.bake.screen.pixelError, 1.0);
     EXPECT_EQ(s.bake.method, ProxyMethod::Decimate);

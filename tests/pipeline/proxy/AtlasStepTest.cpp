@@ -80,10 +80,11 @@ TEST(AtlasStep, SourcesOfANodeAreItsLeavesInItsFrame) {
     EXPECT_EQ(s.triangleCount(), 4u);
     ASSERT_EQ(s.materials.size(), 1u);
     EXPECT_NE(s.materials[0].texture, nullptr);
-    // The root's origin is the box centre (1, 0.5, 0): the first quad starts at x = -1.
-    EXPECT_FLOAT_EQ(s.positions[0].x, -1.0f);
-    EXPECT_FLOAT_EQ(s.positions[4].x, 0.0f);
-    EXPECT_FLOAT_EQ(s.positions[0].y, -0.5f);
+    // The root's frame is its first input's (BakeFrame.h): the first quad's translation (0, 0, 0),
+    // so the second quad starts at x = 1.
+    EXPECT_FLOAT_EQ(s.positions[0].x, 0.0f);
+    EXPECT_FLOAT_EQ(s.positions[4].x, 1.0f);
+    EXPECT_FLOAT_EQ(s.positions[0].y, 0.0f);
 }
 
 TEST(AtlasStep, KeysFollowTheTexelsAndTheAtlasSwitch) {
