@@ -12,6 +12,9 @@ namespace hlod {
 
 namespace {
 
+// How many of the costliest units each greedy step tries to split.
+constexpr std::size_t kSplitCandidates = 8;
+
 // Estimated input triangles of every inner node (ShardPlan.h "Cost"), children first.
 std::vector<double> estimatedInputs(const Scene& scene, const ClusterTree& tree, double rho) {
     std::vector<double> est(tree.nodes.size(), 0.0);
@@ -79,32 +82,45 @@ public:
     double weight(std::uint64_t key) const { return weight_.at(key); }
 
     // LPT over `units`: per shard its unit indices and cost; returns the largest shard cost.
+    // Units with equal root keys (copies) form one group, baked once in one shard. A key in
+    // several groups is shared: the shards bake it together through the cache's claims, so
+    // each group is charged its share, w / (groups holding it); the loads sum to the total.
     double assign(const std::vector<Unit>& units, std::vector<std::vector<std::size_t>>* members,
                   std::vector<double>* loads) const {
-        std::vector<std::size_t> order(units.size());
+        std::vector<std::vector<std::size_t>> groups;
+        std::unordered_map<std::uint64_t, std::size_t> groupOfRootKey;
+        for (std::size_t u = 0; u < units.size(); ++u) {
+            const auto [it, fresh] = groupOfRootKey.emplace(key_[units[u].root], groups.size());
+            if (fresh) groups.emplace_back();
+            groups[it->second].push_back(u);
+        }
+        std::vector<std::vector<std::uint64_t>> groupKeys(groups.size());
+        std::unordered_map<std::uint64_t, int> holders;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            for (std::size_t u : groups[g])
+                groupKeys[g].insert(groupKeys[g].end(), units[u].keys.begin(), units[u].keys.end());
+            std::sort(groupKeys[g].begin(), groupKeys[g].end());
+            groupKeys[g].erase(std::unique(groupKeys[g].begin(), groupKeys[g].end()),
+                               groupKeys[g].end());
+            for (std::uint64_t k : groupKeys[g])
+                ++holders[k];
+        }
+        std::vector<double> cost(groups.size(), 0.0);
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            for (std::uint64_t k : groupKeys[g])
+                cost[g] += weight_.at(k) / holders.at(k);
+        }
+        std::vector<std::size_t> order(groups.size());
         std::iota(order.begin(), order.end(), std::size_t(0));
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            return units[a].cost > units[b].cost;
-        });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
         std::vector<double> load(static_cast<std::size_t>(shards_), 0.0);
         std::vector<std::vector<std::size_t>> in(static_cast<std::size_t>(shards_));
-        std::unordered_map<std::uint64_t, std::size_t> shardOfRootKey;
-        std::unordered_set<std::uint64_t> counted;
-        for (std::size_t u : order) {
-            const Unit& unit = units[u];
-            std::size_t s = 0;
-            const auto copy = shardOfRootKey.find(key_[unit.root]);
-            if (copy != shardOfRootKey.end()) {
-                s = copy->second; // a copy: baked once, where the first one is
-            } else {
-                s = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) -
-                                             load.begin());
-                shardOfRootKey.emplace(key_[unit.root], s);
-            }
-            for (std::uint64_t k : unit.keys) {
-                if (counted.insert(k).second) load[s] += weight_.at(k);
-            }
-            in[s].push_back(u);
+        for (std::size_t g : order) {
+            const auto s =
+                static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+            load[s] += cost[g];
+            in[s].insert(in[s].end(), groups[g].begin(), groups[g].end());
         }
         const double worst = load.empty() ? 0.0 : *std::max_element(load.begin(), load.end());
         if (members) *members = std::move(in);
@@ -150,28 +166,41 @@ ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakePara
     plan.totalCost = units[0].cost;
     std::vector<Id> top;
     double makespan = planner.assign(units, nullptr, nullptr);
-    // Greedy splits of the costliest unit while the estimated makespan drops (ShardPlan.h).
+    // Greedy splits while the estimated makespan drops (ShardPlan.h): of the costliest units,
+    // the one whose split lowers it most.
     for (;;) {
-        const auto largest =
-            std::max_element(units.begin(), units.end(),
-                             [](const Unit& a, const Unit& b) { return a.cost < b.cost; });
-        if (largest == units.end()) break;
-        std::vector<Unit> next;
-        next.reserve(units.size() + tree.nodes[largest->root].children.size());
-        for (auto it = units.begin(); it != units.end(); ++it) {
-            if (it != largest) next.push_back(*it);
+        std::vector<std::size_t> byCost(units.size());
+        std::iota(byCost.begin(), byCost.end(), std::size_t(0));
+        std::stable_sort(byCost.begin(), byCost.end(), [&](std::size_t a, std::size_t b) {
+            return units[a].cost > units[b].cost;
+        });
+        byCost.resize(std::min(byCost.size(), kSplitCandidates));
+        std::vector<Unit> best;
+        std::vector<Id> bestTop;
+        double bestMakespan = makespan;
+        for (std::size_t u : byCost) {
+            std::vector<Unit> next;
+            next.reserve(units.size() + tree.nodes[units[u].root].children.size());
+            for (std::size_t other = 0; other < units.size(); ++other) {
+                if (other != u) next.push_back(units[other]);
+            }
+            for (Id c : tree.nodes[units[u].root].children) {
+                if (!tree.nodes[c].isLeaf()) next.push_back(planner.makeUnit(c));
+            }
+            std::vector<Id> nextTop = top;
+            nextTop.push_back(units[u].root);
+            const double candidate =
+                topCost(planner, keys, nextTop) + planner.assign(next, nullptr, nullptr);
+            if (candidate < bestMakespan) {
+                bestMakespan = candidate;
+                best = std::move(next);
+                bestTop = std::move(nextTop);
+            }
         }
-        for (Id c : tree.nodes[largest->root].children) {
-            if (!tree.nodes[c].isLeaf()) next.push_back(planner.makeUnit(c));
-        }
-        std::vector<Id> nextTop = top;
-        nextTop.push_back(largest->root);
-        const double candidate =
-            topCost(planner, keys, nextTop) + planner.assign(next, nullptr, nullptr);
-        if (!(candidate < makespan)) break;
-        makespan = candidate;
-        units = std::move(next);
-        top = std::move(nextTop);
+        if (bestTop.empty()) break;
+        makespan = bestMakespan;
+        units = std::move(best);
+        top = std::move(bestTop);
     }
     std::vector<std::vector<std::size_t>> members;
     planner.assign(units, &members, &plan.cost);

@@ -6,13 +6,14 @@
 // Cost: a node's bake is estimated by its input triangles: its leaf children's triangles plus
 // rho (BakeParams::proxyRatio, the most a kept proxy holds of its inputs) times the estimated
 // input of each inner child. Translated copies of a cluster bake once (equal structuralKeys):
-// a key's cost is counted once, and a subtree whose root key another shard already has goes to
-// that shard, so copies are baked once and reused there. Keys shared deeper down (the same part
-// under different subtrees) are counted for the first shard only; the cache's claims
-// (ProxyCache.h) make the others wait for that proxy instead of baking it again.
-// Cut: greedy. Starting from the root as the only unit, the unit of largest cost is split (its
-// inner children become units, it moves above the cut) while that lowers the estimated
-// makespan: the cost above the cut (the final step, serial) plus the largest shard's. Units are
+// subtrees with equal root keys go to one shard, where the first is baked and the others
+// reused. A key shared deeper down (the same part under different subtrees) is baked once too:
+// the shards that need it share the work through the cache's claims (ProxyCache.h: one bakes,
+// the others wait and reuse), so each is charged its share of that key's cost.
+// Cut: greedy. Starting from the root as the only unit, one unit is split at a time (its inner
+// children become units, it moves above the cut): of the 8 costliest, the one that lowers the
+// estimated makespan most, the cost above the cut (the final step, serial) plus the largest
+// shard's; until no split lowers it. Units are
 // put into shards largest first, each into the least loaded shard (LPT), so the shards'
 // estimated costs are balanced, not their numbers of subtrees. A shard may get nothing when
 // there are fewer units than shards.
@@ -31,7 +32,8 @@ namespace hlod {
 struct ShardPlan {
     int shards = 0;
     std::vector<std::vector<Id>> roots; // per shard: its subtree roots (inner nodes), ascending
-    std::vector<double> cost;           // per shard: estimated input triangles it bakes
+    std::vector<double> cost;           // per shard: estimated input triangles it bakes (its
+                                        // share of what it has in common with other shards)
     std::vector<Id> top;                // inner nodes above the cut (the final step's), ascending
     double topCost = 0.0;               // their estimated input triangles
     double totalCost = 0.0;             // every distinct node's (the single machine's work)
