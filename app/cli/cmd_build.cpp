@@ -276,11 +276,11 @@ int runBuild(const CommandArgs& argv) {
     graph.run({exportNode}, bar.progress());
     bar.finish();
     const NodeOutput& out = *graph.output(exportNode);
-    if (out.bake->damaged > 0) {
+    if (const std::size_t n = out.bake->damaged; n > 0) {
         std::fprintf(stderr,
-                     "hlod build: warning: %zu proxy files in the cache were damaged and were "
-                     "baked again\n",
-                     out.bake->damaged);
+                     "hlod build: warning: %zu damaged proxy %s in the cache %s not trusted and "
+                     "%s baked again\n",
+                     n, n == 1 ? "file" : "files", n == 1 ? "was" : "were", n == 1 ? "was" : "were");
     }
     if (args.has("--json")) {
         printJson(out, plan);
