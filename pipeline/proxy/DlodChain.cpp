@@ -2,6 +2,7 @@
 // simplifier (Garland & Heckbert 1997), see DlodChain.h.
 #include "pipeline/proxy/DlodChain.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -12,6 +13,7 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/proxy/BakeStats.h"
+#include "pipeline/proxy/DeviationCheck.h"
 
 namespace hlod {
 
@@ -61,6 +63,29 @@ std::vector<Mesh> buildDlodChain(const Mesh& mesh, const DlodParams& params) {
         chain.push_back(extractLevel(mesh, current));
     }
     return chain;
+}
+
+std::vector<double> dlodDeviations(const Mesh& original, const std::vector<Mesh>& chain) {
+    std::vector<double> out;
+    const double extent = original.localBounds().diagonal();
+    for (const Mesh& level : chain) {
+        auto within = [&](double limit) {
+            return withinDistanceOf(level.positions, level.indices, original.positions,
+                                    original.indices, limit) &&
+                   withinDistanceOf(original.positions, original.indices, level.positions,
+                                    level.indices, limit);
+        };
+        // Bisection between a limit that fails and one that holds (the diagonal always does).
+        double lo = 0.0, hi = std::max(extent, 1e-9);
+        while (!within(hi))
+            hi *= 2.0;
+        while (hi - lo > 0.01 * hi) {
+            const double mid = 0.5 * (lo + hi);
+            (within(mid) ? hi : lo) = mid;
+        }
+        out.push_back(hi);
+    }
+    return out;
 }
 
 DlodSummary summarizeDlodChains(const Scene& scene, const DlodParams& params, int threads) {

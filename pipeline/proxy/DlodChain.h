@@ -24,6 +24,14 @@ struct DlodParams {
 // The reduced meshes of one chain (original excluded), attributes carried over.
 std::vector<Mesh> buildDlodChain(const Mesh& mesh, const DlodParams& params = {});
 
+// How far each level of `chain` deviates from `original` (two-sided Hausdorff distance, in the
+// mesh's own units), measured to within 1 % by bisection on the certificate of
+// DeviationCheck.h (withinDistanceOf both ways). A renderer shows a level only where this
+// deviation projects to at most its pixel error, as HLOD proxies are shown (the thesis' screen
+// size thresholds alone showed torn, spiky far levels: a count-driven reduction can move a
+// surface by metres).
+std::vector<double> dlodDeviations(const Mesh& original, const std::vector<Mesh>& chain);
+
 struct DlodSummary {
     std::size_t triangles = 0; // instanced, original levels included
     std::size_t vertices = 0;

@@ -101,9 +101,9 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     const std::vector<Camera> cameras = sampleCameraPath(path, o.frames, fps, o.width, o.height);
     const double referenceHeight = 1080.0;
     const double selectionS = o.screenSize * o.height / referenceHeight;
-    std::vector<double> dlodThreshold{0.0}; // level l is allowed at p <= dlodThreshold[l]
-    for (int l = 1; l <= 16; ++l)
-        dlodThreshold.push_back(selectionS * std::pow(0.4, (l - 1) * 0.5));
+    // A DLOD level is shown where its measured deviation covers at most the pixel error of the
+    // reference viewport (as proxies are at their switch): dev * ppu / d <= height / 1080.
+    const double dlodPixelError = o.height / referenceHeight;
 
     // Configurations; Original first, always (it is the image reference).
     std::vector<Config> configs;
@@ -140,13 +140,18 @@ void runBench(const Scene& scene, const BenchOptions& o) {
 
     // DLOD chains, once per unique mesh.
     std::vector<std::vector<Mesh>> chains;
+    std::vector<std::vector<double>> deviations; // per mesh, per level (mesh units)
     if (want("dlod")) {
         chains.resize(scene.meshes.size());
+        deviations.resize(scene.meshes.size());
         tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
         std::fprintf(stderr, "dlod: building chains for %zu meshes\n", scene.meshes.size());
         arena.execute([&] {
             tbb::parallel_for(std::size_t(0), scene.meshes.size(),
-                              [&](std::size_t m) { chains[m] = buildDlodChain(scene.meshes[m]); });
+                              [&](std::size_t m) {
+                                  chains[m] = buildDlodChain(scene.meshes[m]);
+                                  deviations[m] = dlodDeviations(scene.meshes[m], chains[m]);
+                              });
         });
         DlodSummary summary;
         for (const MeshInstance& inst : scene.instances) {
@@ -173,11 +178,15 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     std::vector<glm::dvec3> instCenter(nInst);
     std::vector<double> instRadius(nInst);
     std::vector<glm::vec4> instColor(nInst);
+    std::vector<double> instScale(nInst); // largest scale of the instance's transform
     std::vector<SurfaceLook> instLook(nInst);
     for (Id i = 0; i < nInst; ++i) {
         const Aabb b = scene.instanceBounds(i);
         instCenter[i] = b.center();
         instRadius[i] = b.diagonal() * 0.5;
+        const glm::dmat3 linear(scene.instanceTransform(i));
+        instScale[i] = std::max({glm::length(linear[0]), glm::length(linear[1]),
+                                 glm::length(linear[2])});
         const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
         instColor[i] = mesh.material < scene.materials.size()
                            ? scene.materials[mesh.material].effectiveColor()
@@ -274,10 +283,10 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                     const int levels = static_cast<int>(c.instanceDrawables[i].size()) - 1;
                     if (levels > 0) {
                         const double d = glm::length(instCenter[i] - cam.eye);
-                        if (d > instRadius[i]) {
-                            const double p = 2.0 * instRadius[i] * ppu / d;
-                            for (int l = 1; l <= levels; ++l)
-                                if (p <= dlodThreshold[static_cast<std::size_t>(l)]) level = l;
+                        const std::vector<double>& dev = deviations[scene.instances[i].mesh];
+                        for (int l = 1; l <= levels; ++l) {
+                            const double world = dev[static_cast<std::size_t>(l - 1)] * instScale[i];
+                            if (world * ppu <= dlodPixelError * d) level = l;
                         }
                     }
                     picks.emplace_back(i, level);

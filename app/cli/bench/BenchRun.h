@@ -5,13 +5,11 @@
 //
 // Per frame and configuration:
 // - Original: every instance whose bounding sphere touches the frustum is drawn.
-// - DLOD chain: the same instances, each at the level its projected size allows. With p the
-//   projected diameter (pixels) of the instance's bounding sphere and S the selection threshold,
-//   level 0 (the original) when p > S, else level l >= 1 is allowed when
-//   p <= S * 0.4^((l - 1) / 2), and the coarsest allowed level is drawn. Each level keeps 40%
-//   of the triangles of the one before; at a constant on-screen error the triangle count a mesh
-//   needs grows with the square of its projected size, so each level's threshold is sqrt(0.4)
-//   (0.63) of the previous one, and level 1 switches where an HLOD node of the same size would.
+// - DLOD chain: the same instances, each at the coarsest level of its chain (4 reductions
+//   keeping 40 % each, DlodChain.h) whose measured deviation from the original (two-sided
+//   Hausdorff, dlodDeviations) covers at most the pixel error of the 1080 px reference
+//   viewport at the instance's distance: the rule the proxies follow at their switch. (The
+//   thesis' projected-size thresholds showed count-driven reductions that had torn a mesh.)
 // - HLOD: the draw list of the front cache selection (LodSelection.h, thesis Algorithm 5).
 // S in render pixels is the bake's screen size (--screen-size, default 300 px at the bake's
 // reference viewport of 1080 px) scaled to the render height: S * height / 1080, so nodes
