@@ -146,6 +146,50 @@ std::uint64_t planIdFrom(const Scene& scene, const std::string& treeBytes,
     return h.digest();
 }
 
+// Shard `index`'s slice of the scene into `folder`; its entry of plan.json "shard_list".
+nlohmann::json writeSlice(const std::filesystem::path& folder, const Scene& scene,
+                          const ClusterTree& tree, int index, PlanSummary& s) {
+    const std::vector<Id>& roots = s.shards.roots[static_cast<std::size_t>(index)];
+    const Scene slice = sliceScene(scene, tree, roots);
+    std::size_t meshes = 0, triangles = 0, inner = 0;
+    for (const Mesh& m : slice.meshes) {
+        meshes += m.indices.empty() ? 0 : 1;
+        triangles += m.triangleCount();
+    }
+    std::vector<Id> stack(roots.begin(), roots.end());
+    while (!stack.empty()) {
+        const Id id = stack.back();
+        stack.pop_back();
+        inner += tree.nodes[id].isLeaf() ? 0 : 1;
+        for (Id c : tree.nodes[id].children)
+            stack.push_back(c);
+    }
+    std::string bytes = writeSceneBinary(slice);
+    s.shardBytes.push_back(bytes.size() + sizeof(std::uint64_t));
+    writeChecked(folder / sliceName(index), std::move(bytes));
+    s.shardInnerNodes.push_back(inner);
+    s.shardMeshes.push_back(meshes);
+    s.shardTriangles.push_back(triangles);
+    return {{"index", index},        {"file", sliceName(index)},
+            {"roots", roots},        {"cost", s.shards.cost[static_cast<std::size_t>(index)]},
+            {"inner_nodes", inner},  {"meshes", meshes},
+            {"triangles", triangles}};
+}
+
+// The fresh plan folder takes the place of the old one (which goes, with its shard-I.done).
+void swapIn(const std::filesystem::path& fresh, const std::filesystem::path& folder,
+            const std::filesystem::path& old) {
+    std::error_code ec;
+    std::filesystem::remove_all(old, ec);
+    if (std::filesystem::exists(folder, ec)) {
+        std::filesystem::rename(folder, old, ec);
+        if (ec) throw Error(ErrorCode::Io, folder, "cannot replace the old plan: " + ec.message());
+    }
+    std::filesystem::rename(fresh, folder, ec);
+    if (ec) throw Error(ErrorCode::Io, folder, "cannot move the plan into place: " + ec.message());
+    std::filesystem::remove_all(old, ec);
+}
+
 } // namespace
 
 std::filesystem::path planFolder(const std::filesystem::path& cacheDir) {
@@ -192,34 +236,7 @@ PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& sc
         nlohmann::json list = nlohmann::json::array();
         for (int i = 0; i < shards; ++i) {
             progress.throwIfCancelled();
-            const std::vector<Id>& roots = s.shards.roots[static_cast<std::size_t>(i)];
-            const Scene slice = sliceScene(scene, tree, roots);
-            std::size_t meshes = 0, triangles = 0, inner = 0;
-            for (const Mesh& m : slice.meshes) {
-                meshes += m.indices.empty() ? 0 : 1;
-                triangles += m.triangleCount();
-            }
-            std::vector<Id> stack(roots.begin(), roots.end());
-            while (!stack.empty()) {
-                const Id id = stack.back();
-                stack.pop_back();
-                inner += tree.nodes[id].isLeaf() ? 0 : 1;
-                for (Id c : tree.nodes[id].children)
-                    stack.push_back(c);
-            }
-            std::string bytes = writeSceneBinary(slice);
-            s.shardBytes.push_back(bytes.size() + 8);
-            writeChecked(fresh / sliceName(i), std::move(bytes));
-            s.shardInnerNodes.push_back(inner);
-            s.shardMeshes.push_back(meshes);
-            s.shardTriangles.push_back(triangles);
-            list.push_back({{"index", i},
-                            {"file", sliceName(i)},
-                            {"roots", roots},
-                            {"cost", s.shards.cost[static_cast<std::size_t>(i)]},
-                            {"inner_nodes", inner},
-                            {"meshes", meshes},
-                            {"triangles", triangles}});
+            list.push_back(writeSlice(fresh, scene, tree, i, s));
             progress.emit(ProgressInfo{"plan", static_cast<std::uint64_t>(i) + 1,
                                        static_cast<std::uint64_t>(shards) + 1,
                                        "wrote " + sliceName(i)});
@@ -236,20 +253,7 @@ PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& sc
             {"above_cut", s.shards.top},
             {"shard_list", list}};
         writeFileAtomic(fresh / kPlanFile, j.dump(1) + "\n");
-        // Swap in: the old plan (and its shard-I.done files) goes, the new one takes its place.
-        const std::filesystem::path old = cacheDir / ("plan.old-" + suffix);
-        std::filesystem::remove_all(old, ec);
-        if (std::filesystem::exists(s.folder)) {
-            std::filesystem::rename(s.folder, old, ec);
-            if (ec)
-                throw Error(ErrorCode::Io, s.folder,
-                            "cannot replace the old plan: " + ec.message());
-        }
-        std::filesystem::rename(fresh, s.folder, ec);
-        if (ec)
-            throw Error(ErrorCode::Io, s.folder,
-                        "cannot move the plan into place: " + ec.message());
-        std::filesystem::remove_all(old, ec);
+        swapIn(fresh, s.folder, cacheDir / ("plan.old-" + suffix));
     } catch (...) {
         std::filesystem::remove_all(fresh, ec);
         throw;
