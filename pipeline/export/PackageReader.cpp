@@ -109,16 +109,32 @@ bool isPackageFolder(const fs::path& dir) {
            fs::is_regular_file(dir / "tileset.json", ec);
 }
 
+// The string under `key`, or "" when `j` is no object or the value no string (json::value
+// throws on both, and a mutated manifest must be refused with a message naming the file; found
+// by fuzz_package).
+namespace {
+
+std::string textOf(const nlohmann::json& j, const char* key) {
+    if (!j.is_object()) return {};
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+} // namespace
+
 PackageInfo readPackage(const fs::path& dirIn) {
     PackageInfo info;
     info.dir = fs::absolute(dirIn).lexically_normal();
     const fs::path manifestFile = info.dir / "hlod.json";
     info.manifest = readJson(manifestFile);
     const nlohmann::json tileset = readJson(info.dir / "tileset.json");
-    if (info.manifest.value("format", "") != "hlod-studio-package") {
+    if (textOf(info.manifest, "format") != "hlod-studio-package") {
         throw Error(ErrorCode::Malformed, manifestFile, "not an HLOD Studio package manifest");
     }
-    if (tileset.value("asset", nlohmann::json::object()).value("version", "") != "1.1") {
+    const nlohmann::json none;
+    const nlohmann::json& asset =
+        tileset.is_object() && tileset.contains("asset") ? tileset["asset"] : none;
+    if (textOf(asset, "version") != "1.1") {
         throw Error(ErrorCode::Malformed, info.dir / "tileset.json", "not a 3D Tiles 1.1 tileset");
     }
     try {

@@ -49,7 +49,9 @@ public:
     template <typename T> std::vector<T> array() {
         const std::uint64_t n = count(sizeof(T));
         std::vector<T> v(n);
-        std::memcpy(v.data(), bytes.data() + pos, n * sizeof(T));
+        // An empty vector's data() may be null, which memcpy must not get even for 0 bytes
+        // (found by fuzz_scene under UBSan).
+        if (n > 0) std::memcpy(v.data(), bytes.data() + pos, n * sizeof(T));
         pos += n * sizeof(T);
         return v;
     }
