@@ -47,9 +47,9 @@ template <typename F> void expectOnlyHlodErrors(F&& body) {
     try {
         body();
     } catch (const hlod::Error& e) {
-        // The expected way to refuse bad input; the message must name something.
-        if (std::string_view(e.what()).empty()) {
-            std::fprintf(stderr, "hlod::Error with an empty message\n");
+        // The expected way to refuse bad input; the message must name the file it is about.
+        if (e.file().empty() || e.problem().empty()) {
+            std::fprintf(stderr, "hlod::Error without a file or a problem: %s\n", e.what());
             std::abort();
         }
     } catch (const std::bad_alloc&) {

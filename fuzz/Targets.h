@@ -161,6 +161,8 @@ inline void package(const std::uint8_t* data, std::size_t size) {
     if (!detail::unpackFolder(in, dir)) return;
     expectOnlyHlodErrors([&] {
         const PackageInfo info = readPackage(dir);
+        (void)info.tree.height(); // what `hlod info PACKAGE` walks
+        (void)info.tree.leafCount();
         (void)readPackageScene(info);
     });
 }

@@ -76,21 +76,23 @@ for t in "${RUN[@]}"; do
   log=$BUILD/fuzz-$t.log
   echo "fuzz.sh: $t for ${SECONDS_PER_TARGET}s (log: $log)" >&2
   set +e
+  started=$(date +%s)
   HLOD_FUZZ_TMP=$BUILD/tmp ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$BUILD/fuzz/fuzz_$t" "${args[@]}" >"$log" 2>&1
   rc=$?
+  elapsed=$(($(date +%s) - started))
   set -e
-  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1 || true)
-  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
-  ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
+  execs=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1 || true)
+  cov=$(grep -a -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
+  ft=$(grep -a -o 'ft: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
   corpus=$(find "$BUILD/corpus/$t" -type f | wc -l)
-  line="$t: ${SECONDS_PER_TARGET}s, ${execs:-?} executions, coverage ${cov:-?} edges / ${ft:-?} features, corpus $corpus, exit $rc"
+  line="$t: ${elapsed}s, ${execs:-?} executions, coverage ${cov:-?} edges / ${ft:-?} features, corpus $corpus, exit $rc"
   echo "fuzz.sh: $line" >&2
   [ -n "${HLOD_FUZZ_LOG:-}" ] && echo "$line" >>"$HLOD_FUZZ_LOG"
   if [ $rc -ne 0 ]; then
     echo "fuzz.sh: $t found a problem; input in $BUILD/artifacts/$t/, last lines of the log:" >&2
-    grep -E 'ERROR|SUMMARY|exception|inconsistent|Test unit written' "$log" | head -20 >&2 || true
+    grep -a -E 'ERROR|SUMMARY|exception|inconsistent|Test unit written' "$log" | head -20 >&2 || true
     status=1
   fi
 done
