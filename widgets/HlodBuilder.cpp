@@ -126,10 +126,13 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
     // A cancel that arrives after the last node baked still means "no result".
     wasCancelled = wasCancelled || job->cancel.load();
     post([this, id, result = std::move(result), error, wasCancelled] {
+        // A cancel raised while this call waited in the queue, after the worker's last look at
+        // the flag, means "no result" too: cancel() is never followed by finished().
+        const bool stopped = wasCancelled || cancelRaised(id);
         finish(id);
         if (id != current_) return;
         current_ = 0;
-        if (wasCancelled)
+        if (stopped)
             Q_EMIT cancelled();
         else if (!error.isEmpty())
             Q_EMIT failed(error);
@@ -138,6 +141,12 @@ void HlodBuilder::run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings
             Q_EMIT finished(result);
         }
     });
+}
+
+bool HlodBuilder::cancelRaised(std::uint64_t id) const {
+    for (const auto& job : jobs_)
+        if (job->id == id) return job->cancel.load();
+    return false;
 }
 
 void HlodBuilder::finish(std::uint64_t id) {

@@ -10,7 +10,8 @@
 // come back as queued calls on this object's thread. Starting again cancels the running build,
 // whose result is dropped without a signal. cancel() raises the pipeline's cancel flag: the run
 // ends with Error(Cancelled) within about one node's bake and cancelled() follows, never
-// finished(). The destructor cancels and joins every worker.
+// finished() (not even when the run had ended and its result was waiting in the event queue
+// when cancel() came). The destructor cancels and joins every worker.
 // Failure: hlod::Error, any other exception or out-of-memory end in failed(message); nothing
 // escapes the worker. The statistics of a finished build are computed on the worker too.
 #pragma once
@@ -81,6 +82,8 @@ private:
 
     void run(Job* job, std::shared_ptr<const Scene> scene, HlodSettings settings,
              std::shared_ptr<const HlodBuild> previous);
+    // Whether cancel() has raised the flag of job `id` (false once the job is gone).
+    bool cancelRaised(std::uint64_t id) const;
     void finish(std::uint64_t id);
 
     std::vector<std::unique_ptr<Job>> jobs_;

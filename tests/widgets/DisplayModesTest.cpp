@@ -13,6 +13,7 @@
 
 #include "TestBuilds.h"
 #include "TestScenes.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/view/TreeViews.h"
 #include "widgets/ClusterDisplay.h"
 #include "widgets/ClusterTreeModel.h"
@@ -96,6 +97,10 @@ TEST_F(DisplayModesTest, ClustersModeColoursTheLevelsCutAndMatchesBaseline) {
     EXPECT_TRUE(display->overlayText().contains(
         cut.size() == 1 ? QStringLiteral("1 cluster")
                         : QStringLiteral("%1 clusters").arg(cut.size())));
+    // The baseline (default parameters: level growth 2, proxy ratio 0.35): the sample's tree
+    // is the root over 5 clusters and 69 single meshes, so level 1 shows 74 colours and the
+    // suggested level is 2, the whole yard in the root's colour inside its bounding sphere,
+    // labelled "Level 2 of 2: 1 cluster".
     const double diff = test::compareWithBaseline(frame, QStringLiteral("mode-clusters"));
     EXPECT_GE(diff, 0.0) << "missing baseline: run with HLOD_UPDATE_BASELINES=1";
     EXPECT_LT(diff, kBaselineTolerance);
@@ -126,7 +131,14 @@ TEST_F(DisplayModesTest, HlodPreviewDrawsAlgorithmFivesCutAndMatchesBaseline) {
 }
 
 TEST_F(DisplayModesTest, FarAwayOnlyTheRootProxyIsDrawnTintedAsDepthZero) {
-    open(test::sampleBuild());
+    // Every proxy kept (ratio 1): what is tested is Algorithm 5 stopping at the root and the
+    // depth-0 tint, which needs a root proxy; whether the sample's root proxy pays for itself
+    // under the default economy is the pipeline's business (a root without one is always
+    // refined, ProxyEconomy.h rootHasNoProxy).
+    HlodSettings settings = test::testSettings();
+    settings.bake.proxyRatio = 1.0;
+    open(test::buildNow(test::sampleBuild().scene, settings));
+    ASSERT_FALSE(rootHasNoProxy(model->built().build->tree, model->built().build->bake));
     model->setMode(DisplayMode::Hlod);
     model->setTintByDepth(true);
     // Twenty times farther than the fitted view the whole yard spans ~18 px, far below

@@ -4,14 +4,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
+#include <thread>
 
+#include <QCoreApplication>
 #include <QSignalSpy>
 #include <QTimer>
 
 #include "TestBuilds.h"
 #include "TestScenes.h"
 #include "pipeline/io/SampleScene.h"
+#include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/view/TreeViews.h"
 #include "widgets/StudioModel.h"
 
@@ -60,8 +64,16 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     EXPECT_EQ(built.hlod.triangles, hlod.triangles);
     EXPECT_EQ(built.hlod.vertices, hlod.vertices);
     EXPECT_EQ(built.hlod.bytes, hlod.bytes);
-    // HLOD meshes: one per leaf (original) plus one proxy per inner node.
-    EXPECT_EQ(built.hlod.meshes, tree.nodes.size());
+    // HLOD meshes: one per leaf (original) plus one per proxy. After the proxy economy every
+    // inner node keeps its proxy except, possibly, the root (rootHasNoProxy: a root whose proxy
+    // does not pay is always refined and stores nothing), so the count is the tree's nodes
+    // less such a root.
+    std::size_t meshes = 0;
+    for (Id n = 0; n < tree.nodes.size(); ++n)
+        if (tree.nodes[n].isLeaf() || built.build->bake.nodes[n].hasProxy)
+            ++meshes;
+    EXPECT_EQ(meshes, tree.nodes.size() - (rootHasNoProxy(tree, built.build->bake) ? 1 : 0));
+    EXPECT_EQ(built.hlod.meshes, meshes);
     EXPECT_EQ(built.hlod.version, "HLOD, sphere");
     // The root's subtree holds every instance's triangles.
     EXPECT_EQ(model.subtreeTriangles()[tree.root], model.scene()->stats().triangles);
@@ -89,6 +101,27 @@ TEST(StudioModel, CancelEndsWithoutAResultAndTheNextBuildWorks) {
     ASSERT_TRUE(finished.wait(kBuildWaitMs));
     EXPECT_TRUE(model.hasBuild());
     EXPECT_EQ(cancelled.count(), 1);
+}
+
+TEST(StudioModel, ACancelWhileTheResultIsOnItsWayStillEndsWithoutAResult) {
+    StudioModel model;
+    model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
+    model.setSettings(test::testSettings());
+    QSignalSpy finished(&model, &StudioModel::buildFinished);
+    QSignalSpy cancelled(&model, &StudioModel::buildCancelled);
+    model.build();
+    // The tiny scene builds in milliseconds: with no events processed meanwhile, the worker has
+    // ended and its result waits in the event queue when the cancel comes (a Compare window
+    // closed just then). The result is dropped: cancelled(), never finished().
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    ASSERT_TRUE(model.building());
+    model.cancelBuild();
+    ASSERT_TRUE(cancelled.wait(30000)); // already queued: delivered at once
+    QCoreApplication::processEvents();
+    EXPECT_EQ(finished.count(), 0);
+    EXPECT_EQ(cancelled.count(), 1);
+    EXPECT_FALSE(model.hasBuild());
+    EXPECT_FALSE(model.building());
 }
 
 TEST(StudioModel, BadParametersFailWithAMessageAndNoResult) {

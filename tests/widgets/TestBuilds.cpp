@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "pipeline/doc/Commands.h"
+#include "pipeline/graph/Parameters.h"
 #include "pipeline/io/SampleScene.h"
 #include "pipeline/scene/Primitives.h"
 #include "widgets/StudioModel.h"
@@ -13,12 +14,14 @@
 namespace hlod::widgets::test {
 
 HlodSettings testSettings() {
-    HlodSettings settings;
-    settings.cluster.volume = VolumeType::Sphere;
-    settings.bake.method = ProxyMethod::Decimate;
-    settings.bake.screen.screenSize = 300.0;
-    settings.bake.threads = 2;
-    return settings;
+    // The declared defaults (pipeline/graph/Parameters.cpp: sphere, decimate, S = 300 px, level
+    // growth 2, proxy ratio 0.35), which a new document and `hlod build` use, not the library
+    // structs' (ClusterParams{}.levelGrowth is 1, the thesis' merges): a test that shows a build
+    // of these next to a document must be showing what the document would build.
+    ParamValues bake = defaultValues(NodeKind::Bake);
+    bake["cache"] = false;
+    bake["threads"] = 2;
+    return hlodSettingsFrom(defaultValues(NodeKind::Cluster), bake);
 }
 
 BuiltHlod buildNow(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {

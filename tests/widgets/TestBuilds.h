@@ -14,7 +14,8 @@ class StudioModel;
 
 namespace hlod::widgets::test {
 
-// Sphere clustering, decimate proxies, S = 300 px, two threads, no disk cache.
+// The parameters' declared defaults (what a new document builds: sphere clustering, level
+// growth 2, decimate proxies, S = 300 px, proxy ratio 0.35), with two threads and no disk cache.
 HlodSettings testSettings();
 
 // buildHlod plus the statistics, as HlodBuilder computes them.

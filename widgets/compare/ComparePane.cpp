@@ -104,8 +104,10 @@ ComparePane::ComparePane(const QString& title, QWidget* parent)
     connect(model_.get(), &StudioModel::buildFailed, this, [this](const QString& message) {
         setState(State::Failed, tr("Build failed: %1").arg(message));
     });
-    connect(model_.get(), &StudioModel::buildCancelled, this,
-            [this] { setState(State::Cancelled, tr("Cancelled")); });
+    // After cancel() the pane says so already; this covers a cancel of its model from elsewhere.
+    connect(model_.get(), &StudioModel::buildCancelled, this, [this] {
+        if (building()) setState(State::Cancelled, tr("Cancelled"));
+    });
     writeSelector();
     setState(State::Empty, tr("No scene"));
 }
@@ -155,7 +157,14 @@ void ComparePane::rebuild() {
 }
 
 void ComparePane::cancel() {
-    if (building()) model_->cancelBuild();
+    if (!building()) return;
+    // The worker stops at its next check of the flag, within about one node's bake, and its
+    // cancelled() comes later still: the pane is cancelled from now on, so that a window closed
+    // and shown again at once rebuilds it (MainWindow::showCompare) instead of waiting for a
+    // build that will never finish. The model never delivers a result after the cancel
+    // (HlodBuilder).
+    model_->cancelBuild();
+    setState(State::Cancelled, tr("Cancelled"));
 }
 
 void ComparePane::readSelector() {

@@ -56,6 +56,8 @@ public:
     HlodSettings settings() const { return applyConfig(base_, config_); }
 
     void rebuild();
+    // Stops the build: the pane is Cancelled (and not building) at once, with no result; the
+    // worker winds down in the background (model()->building() until it has).
     void cancel();
     State state() const { return state_; }
     bool building() const { return state_ == State::Building; }

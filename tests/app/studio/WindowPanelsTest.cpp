@@ -29,6 +29,7 @@
 #include "widgets/StatsPanel.h"
 #include "widgets/StudioModel.h"
 #include "widgets/Viewport.h"
+#include "widgets/compare/ComparePane.h"
 #include "widgets/compare/CompareView.h"
 #include "widgets/doc/ProjectSession.h"
 #include "widgets/graph/NodeGraphView.h"
@@ -166,15 +167,50 @@ TEST_F(WindowPanels, CompareWindowClosesWithEscAndWithItsCloseButton) {
     ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
     compare->activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(compare));
+    // Both sides building when the window closes (as right after a selector change; a build of
+    // the sample takes about a second on two cores, so the builds started with the window may
+    // be done by now).
+    const auto rebuildBoth = [compare] {
+        compare->rebuildAll();
+        return compare->left()->building() && compare->right()->building();
+    };
+    // Closing stops its builds: from then on neither side is building, both are cancelled with
+    // no result, and their workers end (the cancel is a flag each sees at its next check).
+    const auto expectStopped = [compare](const char* how) {
+        EXPECT_FALSE(compare->building()) << how;
+        for (widgets::ComparePane* pane : {compare->left(), compare->right()}) {
+            EXPECT_EQ(pane->state(), widgets::ComparePane::State::Cancelled) << how;
+            EXPECT_EQ(pane->built(), nullptr) << how;
+        }
+    };
+    ASSERT_TRUE(rebuildBoth());
     QTest::keyClick(compare, Qt::Key_Escape);
     EXPECT_TRUE(waitUntil([&] { return !compare->isVisible(); }, 5000));
+    expectStopped("closed by Esc");
+
+    // Shown again at once, before the stopped workers have returned: the sides that were closed
+    // mid-build build again, and finish.
     window->showCompare();
+    EXPECT_TRUE(compare->left()->building());
+    EXPECT_TRUE(compare->right()->building());
     ASSERT_TRUE(QTest::qWaitForWindowExposed(compare));
+    EXPECT_TRUE(waitUntil([&] { return !compare->building(); }));
+    EXPECT_TRUE(compare->allBuilt());
+
     ASSERT_NE(compare->closeButton(), nullptr);
     EXPECT_EQ(compare->closeButton()->text(), QStringLiteral("Close"));
+    ASSERT_TRUE(rebuildBoth());
     QTest::mouseClick(compare->closeButton(), Qt::LeftButton);
     EXPECT_TRUE(waitUntil([&] { return !compare->isVisible(); }, 5000));
-    EXPECT_FALSE(compare->building()); // closing stops its builds
+    expectStopped("closed by its Close button");
+    // The workers end without a result and the panes stay cancelled.
+    EXPECT_TRUE(waitUntil([&] {
+        return !compare->left()->model()->building() && !compare->right()->model()->building();
+    }));
+    for (widgets::ComparePane* pane : {compare->left(), compare->right()}) {
+        EXPECT_FALSE(pane->model()->hasBuild());
+        EXPECT_EQ(pane->state(), widgets::ComparePane::State::Cancelled);
+    }
 }
 
 TEST_F(WindowPanels, StatisticsSayWhatHlodTrianglesCountAndShowTheLevels) {
