@@ -63,6 +63,6 @@ TEST_P(FuzzRegression, EveryCheckedInInputIsRefusedCleanlyOrRead) {
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegression,
                          ::testing::Values("gltf", "scene", "camera_path", "project",
                                            "proxy_cache", "package"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& p) { return p.param; });
 
 } // namespace

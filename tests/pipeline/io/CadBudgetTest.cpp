@@ -6,6 +6,7 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Poly_Triangulation.hxx>
+#include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -69,6 +70,23 @@ TEST(CadBudget, DenseBsplineTerrainIsMeshedWithinItsBudgetAndNoted) {
     const std::string& note = scene.importNotes[0];
     EXPECT_NE(note.find("terrain.brep: face 1 (B-spline surface"), std::string::npos) << note;
     EXPECT_NE(note.find("coarsened by the tessellation budget"), std::string::npos) << note;
+}
+
+TEST(CadBudget, DenseBsplineFaceInAStepFileIsBudgetedToo) {
+    // The XCAF path (STEP/IGES) meshes part by part through the same budget.
+    test::TempDir dir;
+    test::writeDenseBsplineBrep(dir / "terrain.brep", 256, 10000.0);
+    STEPControl_Writer writer;
+    ASSERT_EQ(writer.Transfer(readShape(dir / "terrain.brep"), STEPControl_AsIs),
+              IFSelect_RetDone);
+    ASSERT_EQ(writer.Write((dir / "terrain.step").string().c_str()), IFSelect_RetDone);
+    const Scene scene = importCad(dir / "terrain.step", {});
+    EXPECT_LT(scene.stats().triangles, 48'000u); // the same budget as the BREP above
+    EXPECT_GT(scene.stats().triangles, 10'000u);
+    ASSERT_EQ(scene.importNotes.size(), 1u);
+    EXPECT_NE(scene.importNotes[0].find("terrain.step: face 1 (B-spline surface"),
+              std::string::npos)
+        << scene.importNotes[0];
 }
 
 TEST(CadBudget, FacesWithinTheirBudgetAreMeshedExactlyAsWithout) {
