@@ -12,6 +12,8 @@ namespace hlod {
 
 namespace {
 
+constexpr double kMaxSteps = 65535.0; // 16 bits
+
 // 2^k with 2^k <= x (x > 0, finite).
 double pow2Floor(double x) {
     int e = 0;
@@ -27,7 +29,6 @@ double pow2Ceil(double x) {
 } // namespace
 
 double positionGridStep(double extent, double requested) {
-    constexpr double kMaxSteps = 65535.0;
     const double finest =
         extent > 0.0 && std::isfinite(extent) ? pow2Ceil(extent / kMaxSteps) : 0.0;
     const double asked = requested > 0.0 && std::isfinite(requested) ? pow2Floor(requested) : 0.0;
@@ -35,29 +36,63 @@ double positionGridStep(double extent, double requested) {
     return step > 0.0 ? step : 1.0; // a single point: any grid holds it
 }
 
-QuantizedPositions quantizePositions(std::span<const glm::vec3> positions, double requestedStep) {
-    QuantizedPositions q;
-    if (positions.empty()) return q;
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::vec3& p : positions) {
-        lo = glm::min(lo, glm::dvec3(p));
-        hi = glm::max(hi, glm::dvec3(p));
-    }
+namespace {
+
+// A short decimal d <= lo with hi - d <= kMaxSteps * step (lo itself when none is found): lo
+// rounded down to a multiple of a power of ten at most a tenth of the slack the 16 bits leave.
+double shortOrigin(double lo, double hi, double step) {
+    const double slack = kMaxSteps * step - (hi - lo);
+    if (!(slack > 0.0) || !std::isfinite(lo) || !std::isfinite(slack)) return lo;
+    const int k = static_cast<int>(std::floor(std::log10(slack))) - 1;
+    if (k < -22 || k > 22) return lo; // powers of ten beyond 1e22 are not exact doubles
+    const double ten = std::pow(10.0, std::abs(k)); // exact: 10^|k| <= 1e22
+    const double scaled = k >= 0 ? lo / ten : lo * ten;
+    if (!(std::abs(scaled) < 4.5e15)) return lo; // floor must stay exact
+    double n = std::floor(scaled);
+    double d = k >= 0 ? n * ten : n / ten; // the double nearest the decimal n * 10^k
+    if (d > lo) d = k >= 0 ? (n - 1.0) * ten : (n - 1.0) / ten;
+    return d <= lo && hi - d <= kMaxSteps * step ? d : lo;
+}
+
+} // namespace
+
+PositionGrid positionGrid(const glm::dvec3& lo, const glm::dvec3& hi, double requested) {
     const glm::dvec3 ext = hi - lo;
-    q.offset = lo;
-    q.step = positionGridStep(std::max({ext.x, ext.y, ext.z}), requestedStep);
+    PositionGrid g;
+    g.step = positionGridStep(std::max({ext.x, ext.y, ext.z}), requested);
+    for (int a = 0; a < 3; ++a)
+        g.offset[a] = shortOrigin(lo[a], hi[a], g.step);
+    return g;
+}
+
+QuantizedPositions quantizePositions(std::span<const glm::vec3> positions,
+                                     const PositionGrid& grid) {
+    QuantizedPositions q;
+    q.offset = grid.offset;
+    q.step = grid.step;
+    if (positions.empty()) return q;
     q.values.resize(positions.size() * 4, 0);
     q.min = glm::u16vec3(65535);
     for (std::size_t i = 0; i < positions.size(); ++i) {
         for (int a = 0; a < 3; ++a) {
-            const double v = std::round((double(positions[i][a]) - lo[a]) / q.step);
-            const auto u = static_cast<std::uint16_t>(std::clamp(v, 0.0, 65535.0));
+            const double v = std::round((double(positions[i][a]) - grid.offset[a]) / grid.step);
+            const auto u = static_cast<std::uint16_t>(std::clamp(v, 0.0, kMaxSteps));
             q.values[i * 4 + a] = u;
             q.min[a] = std::min(q.min[a], u);
             q.max[a] = std::max(q.max[a], u);
         }
     }
     return q;
+}
+
+QuantizedPositions quantizePositions(std::span<const glm::vec3> positions, double requestedStep) {
+    if (positions.empty()) return {};
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::vec3& p : positions) {
+        lo = glm::min(lo, glm::dvec3(p));
+        hi = glm::max(hi, glm::dvec3(p));
+    }
+    return quantizePositions(positions, positionGrid(lo, hi, requestedStep));
 }
 
 std::vector<std::int8_t> octahedralNormals(std::span<const glm::vec3> normals) {

@@ -6,7 +6,11 @@
 // Positions: unsigned 16-bit integers on a uniform grid (KHR_mesh_quantization, not
 // normalised; the node transform carries offset and step). The grid step is a power of two, the
 // requested step rounded down (never coarser than asked) but at least what 16 bits need to span
-// the mesh's extent; so a decoded position is off by at most step / 2 on each axis.
+// the mesh's extent; so a decoded position is off by at most step / 2 on each axis. The grid's
+// origin (the node translation) is, per axis, the smallest coordinate rounded down to a multiple
+// of a power of ten at most a tenth of what the 16 bits leave beyond the extent (so it still
+// spans the largest): "-34" rather than "-33.83799743652344" in the JSON, the same step and so
+// the same error bound.
 // Normals: octahedral, 8-bit (filter OCTAHEDRAL, about 1 degree). Texture coordinates: floats
 // with a 8-bit exponent and a 16-bit mantissa shared per vertex (filter EXPONENTIAL, relative
 // error 2^-17). Colours: 8-bit normalised, as they are.
@@ -23,6 +27,12 @@
 
 namespace hlod {
 
+// Where stored positions sit in the mesh's frame: position = offset + step * stored.
+struct PositionGrid {
+    glm::dvec3 offset{0.0};
+    double step = 1.0; // a power of two
+};
+
 struct QuantizedPositions {
     std::vector<std::uint16_t> values; // x, y, z, 0 per vertex (byte stride 8)
     glm::dvec3 offset{0.0};            // position = offset + step * value
@@ -34,6 +44,14 @@ struct QuantizedPositions {
 // (> 0; 0 = the finest grid 16 bits allow). See the header comment.
 double positionGridStep(double extent, double requested);
 
+// The grid for positions within [lo, hi] (lo <= hi) at `requested` precision (see above).
+PositionGrid positionGrid(const glm::dvec3& lo, const glm::dvec3& hi, double requested);
+
+// Positions on `grid`, which must span them (every value within 0 .. 65535).
+QuantizedPositions quantizePositions(std::span<const glm::vec3> positions,
+                                     const PositionGrid& grid);
+
+// Positions on the grid of their own bounds.
 QuantizedPositions quantizePositions(std::span<const glm::vec3> positions, double requestedStep);
 
 // 4 bytes per vector: octahedral x, y, z = 1, w = 0 (meshopt_encodeFilterOct, 8 bits).

@@ -2,6 +2,9 @@
 // KHR_mesh_quantization and EXT_meshopt_compression for compressed scenes; see GlbWriter.h.
 #include "pipeline/io/GlbWriter.h"
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -47,14 +50,64 @@ void check(const GlbMesh& m) {
     }
 }
 
+// A float as the shortest decimal that reads back as the same float (0.4, not
+// 0.4000000059604645); whole numbers as integers. std::to_chars: whatever the C locale.
+nlohmann::json shortFloat(float f) {
+    if (!std::isfinite(f)) return double(f);
+    if (f == std::floor(f) && std::abs(f) < 1e9f) return static_cast<std::int64_t>(f);
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof(text), f).ptr;
+    double d = f;
+    std::from_chars(text, end, d); // the double nearest that decimal: nlohmann prints it back
+    return d;
+}
+
+// A double as JSON: whole numbers without a fraction ("-20", not "-20.0"), others as the
+// shortest decimal that reads back as the same double (nlohmann's default).
+nlohmann::json shortDouble(double d) {
+    if (d == std::floor(d) && std::abs(d) < 9.0e15) return static_cast<std::int64_t>(d);
+    return d;
+}
+
+// The file's streams, each one buffer view (see the header).
+enum Stream { kPositions, kNormals, kUvs, kColors, kIndices16, kIndices32, kStreams };
+
+struct StreamData {
+    std::vector<std::uint8_t> bytes;    // vertex streams: as stored (meshopt: before the codec)
+    std::vector<std::uint32_t> indices; // index streams
+    std::size_t count = 0;              // elements
+};
+
+// Element size of a stream as stored: meshopt positions are 16-bit x, y, z, 0; normals
+// octahedral bytes; uvs exponential words. Plain: floats.
+std::size_t strideOf(Stream s, bool meshopt) {
+    switch (s) {
+    case kPositions:
+        return meshopt ? 8 : 12;
+    case kNormals:
+        return meshopt ? 4 : 12;
+    case kUvs:
+        return 8;
+    case kColors:
+        return 4;
+    case kIndices16:
+        return 2;
+    default:
+        return 4;
+    }
+}
+
 // The document being built: JSON, the BIN chunk (buffer 0) and the size of the meshopt
 // fallback buffer (buffer 1, no data).
 struct Doc {
+    bool meshopt = false;
     nlohmann::json gltf;
     std::vector<std::uint8_t> bin;
     std::size_t fallbackBytes = 0;
     std::map<std::string, int> materials; // dumped material JSON -> index
     std::map<std::string, int> images;    // URI -> image index
+    StreamData streams[kStreams];
+    std::vector<std::pair<int, Stream>> streamAccessors; // accessor, its stream
 
     std::size_t addBytes(const void* data, std::size_t n) {
         const std::size_t offset = bin.size();
@@ -66,40 +119,54 @@ struct Doc {
         gltf["bufferViews"].push_back(std::move(view));
         return static_cast<int>(gltf["bufferViews"].size()) - 1;
     }
-    int plainView(const void* data, std::size_t bytes, int target) {
-        nlohmann::json v = {
-            {"buffer", 0}, {"byteOffset", addBytes(data, bytes)}, {"byteLength", bytes}};
+    static void putOffset(nlohmann::json& j, std::size_t offset) {
+        if (offset > 0) j["byteOffset"] = offset;
+    }
+    int plainView(const void* data, std::size_t bytes, int target, std::size_t stride = 0) {
+        nlohmann::json v = {{"buffer", 0}, {"byteLength", bytes}};
+        putOffset(v, addBytes(data, bytes));
         if (target) v["target"] = target;
+        if (stride) v["byteStride"] = stride;
         return addView(std::move(v));
     }
     // An EXT_meshopt_compression view: `count` elements of `stride` bytes once decoded.
     int meshoptView(const std::vector<std::uint8_t>& packed, std::size_t count, std::size_t stride,
                     int target, const char* mode, const char* filter) {
         nlohmann::json ext = {{"buffer", 0},
-                              {"byteOffset", addBytes(packed.data(), packed.size())},
                               {"byteLength", packed.size()},
                               {"byteStride", stride},
                               {"count", count},
                               {"mode", mode}};
+        putOffset(ext, addBytes(packed.data(), packed.size()));
         if (std::strcmp(filter, "NONE") != 0) ext["filter"] = filter;
         nlohmann::json v = {{"buffer", 1},
-                            {"byteOffset", fallbackBytes},
                             {"byteLength", count * stride},
                             {"target", target},
                             {"extensions", {{kMeshopt, std::move(ext)}}}};
+        putOffset(v, fallbackBytes);
         if (target == kArrayBuffer) v["byteStride"] = stride;
         fallbackBytes = pad4(fallbackBytes + count * stride);
         return addView(std::move(v));
     }
-    int accessor(int view, int componentType, std::size_t count, const char* type,
-                 bool normalized = false) {
-        nlohmann::json a = {{"bufferView", view},
-                            {"componentType", componentType},
-                            {"count", count},
-                            {"type", type}};
+    // An accessor of `count` elements of stream `s` from its element `first` on.
+    int accessor(Stream s, std::size_t first, std::size_t count, int componentType,
+                 const char* type, bool normalized = false) {
+        nlohmann::json a = {{"componentType", componentType}, {"count", count}, {"type", type}};
+        putOffset(a, first * strideOf(s, meshopt));
         if (normalized) a["normalized"] = true;
         gltf["accessors"].push_back(std::move(a));
-        return static_cast<int>(gltf["accessors"].size()) - 1;
+        const int index = static_cast<int>(gltf["accessors"].size()) - 1;
+        streamAccessors.push_back({index, s});
+        return index;
+    }
+    // Appends `count` elements to vertex stream `s`; returns the first.
+    std::size_t append(Stream s, const void* data, std::size_t count) {
+        StreamData& d = streams[s];
+        const std::size_t first = d.count;
+        const auto* p = static_cast<const std::uint8_t*>(data);
+        d.bytes.insert(d.bytes.end(), p, p + count * strideOf(s, meshopt));
+        d.count += count;
+        return first;
     }
 };
 
@@ -117,16 +184,15 @@ int imageIndex(Doc& doc, const GlbMesh& m) {
 // The mesh's material (glTF 2.0 sections 3.8-3.9), written once per distinct content.
 int materialIndex(Doc& doc, const GlbMesh& m) {
     const glm::vec4& c = m.baseColor;
-    nlohmann::json pbr = {{"baseColorFactor", {c.r, c.g, c.b, c.a}},
-                          {"metallicFactor", 0.0},
-                          {"roughnessFactor", 1.0}};
+    nlohmann::json pbr = {{"metallicFactor", 0}}; // roughnessFactor: 1 by default
+    if (c != glm::vec4(1.0f))
+        pbr["baseColorFactor"] = {shortFloat(c.r), shortFloat(c.g), shortFloat(c.b),
+                                  shortFloat(c.a)};
     if (!m.uvs.empty() && (!m.image.empty() || !m.imageUri.empty())) {
-        constexpr int kLinear = 9729, kLinearMipmapLinear = 9987, kRepeat = 10497;
+        constexpr int kLinear = 9729, kLinearMipmapLinear = 9987; // wrap: repeat by default
         if (!doc.gltf.contains("samplers")) {
-            doc.gltf["samplers"] = nlohmann::json::array({{{"magFilter", kLinear},
-                                                           {"minFilter", kLinearMipmapLinear},
-                                                           {"wrapS", kRepeat},
-                                                           {"wrapT", kRepeat}}});
+            doc.gltf["samplers"] = nlohmann::json::array(
+                {{{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}}});
         }
         const int image = imageIndex(doc, m);
         int texture = -1;
@@ -140,106 +206,121 @@ int materialIndex(Doc& doc, const GlbMesh& m) {
         }
         pbr["baseColorTexture"] = {{"index", texture}};
     }
-    nlohmann::json mat = {{"name", m.materialName.empty() ? m.name : m.materialName},
-                          {"pbrMetallicRoughness", pbr}};
+    nlohmann::json mat = {{"pbrMetallicRoughness", pbr}};
     if (m.alphaMask) {
         mat["alphaMode"] = "MASK";
-        mat["alphaCutoff"] = m.alphaCutoff;
+        if (m.alphaCutoff != 0.5f) mat["alphaCutoff"] = shortFloat(m.alphaCutoff);
     } else if (c.a < 1.0f) {
         mat["alphaMode"] = "BLEND";
     }
-    nlohmann::json key = mat;
-    key.erase("name"); // meshes of the same look share a material whatever their names
-    const std::string k = key.dump();
+    // Meshes of the same look share a material whatever their names.
+    const std::string k = mat.dump();
     if (auto it = doc.materials.find(k); it != doc.materials.end()) return it->second;
+    if (!m.materialName.empty()) mat["name"] = m.materialName;
     doc.gltf["materials"].push_back(std::move(mat));
     return doc.materials[k] = static_cast<int>(doc.gltf["materials"].size()) - 1;
 }
 
-// Where a mesh's stored positions sit in its frame: frame = offset + step * stored.
-struct Dequantization {
-    glm::dvec3 offset{0.0};
-    double step = 1.0;
-};
-
-nlohmann::json plainAttributes(Doc& doc, const GlbMesh& m) {
+// A mesh's vertices into the streams; its attributes (accessor indices). Compressed: the
+// positions' grid goes to `grid`.
+nlohmann::json addVertices(Doc& doc, const GlbMesh& m, PositionGrid& grid) {
     const std::size_t n = m.positions.size();
     nlohmann::json attributes;
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const glm::vec3& p : m.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    if (doc.meshopt) {
+        const QuantizedPositions q = quantizePositions(m.positions, m.positionStep);
+        grid = {q.offset, q.step};
+        const int pos = doc.accessor(kPositions, doc.append(kPositions, q.values.data(), n), n,
+                                     kUnsignedShort, "VEC3");
+        doc.gltf["accessors"][pos]["min"] = {q.min.x, q.min.y, q.min.z};
+        doc.gltf["accessors"][pos]["max"] = {q.max.x, q.max.y, q.max.z};
+        attributes["POSITION"] = pos;
+        if (!m.normals.empty()) {
+            const std::vector<std::int8_t> oct = octahedralNormals(m.normals);
+            attributes["NORMAL"] =
+                doc.accessor(kNormals, doc.append(kNormals, oct.data(), n), n, kByte, "VEC3", true);
+        }
+        if (!m.uvs.empty()) {
+            const std::vector<std::uint32_t> exp = exponentialUvs(m.uvs);
+            attributes["TEXCOORD_0"] =
+                doc.accessor(kUvs, doc.append(kUvs, exp.data(), n), n, kFloat, "VEC2");
+        }
+    } else {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const glm::vec3& p : m.positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const int pos = doc.accessor(kPositions, doc.append(kPositions, m.positions.data(), n), n,
+                                     kFloat, "VEC3");
+        // Exact floats (the validator compares them with the data): only ".0" is left out.
+        doc.gltf["accessors"][pos]["min"] = {shortDouble(lo.x), shortDouble(lo.y),
+                                             shortDouble(lo.z)};
+        doc.gltf["accessors"][pos]["max"] = {shortDouble(hi.x), shortDouble(hi.y),
+                                             shortDouble(hi.z)};
+        attributes["POSITION"] = pos;
+        if (!m.normals.empty())
+            attributes["NORMAL"] = doc.accessor(kNormals, doc.append(kNormals, m.normals.data(), n),
+                                                n, kFloat, "VEC3");
+        if (!m.uvs.empty())
+            attributes["TEXCOORD_0"] =
+                doc.accessor(kUvs, doc.append(kUvs, m.uvs.data(), n), n, kFloat, "VEC2");
     }
-    const int pos =
-        doc.accessor(doc.plainView(m.positions.data(), n * 12, kArrayBuffer), kFloat, n, "VEC3");
-    doc.gltf["accessors"][pos]["min"] = {lo.x, lo.y, lo.z};
-    doc.gltf["accessors"][pos]["max"] = {hi.x, hi.y, hi.z};
-    attributes["POSITION"] = pos;
-    if (!m.normals.empty())
-        attributes["NORMAL"] =
-            doc.accessor(doc.plainView(m.normals.data(), n * 12, kArrayBuffer), kFloat, n, "VEC3");
-    if (!m.uvs.empty())
-        attributes["TEXCOORD_0"] =
-            doc.accessor(doc.plainView(m.uvs.data(), n * 8, kArrayBuffer), kFloat, n, "VEC2");
     if (!m.colors.empty())
-        attributes["COLOR_0"] = doc.accessor(doc.plainView(m.colors.data(), n * 4, kArrayBuffer),
-                                             kUnsignedByte, n, "VEC4", true);
+        attributes["COLOR_0"] = doc.accessor(kColors, doc.append(kColors, m.colors.data(), n), n,
+                                             kUnsignedByte, "VEC4", true);
     return attributes;
 }
 
-nlohmann::json meshoptAttributes(Doc& doc, const GlbMesh& m, Dequantization& dq) {
-    const std::size_t n = m.positions.size();
-    nlohmann::json attributes;
-    const QuantizedPositions q = quantizePositions(m.positions, m.positionStep);
-    dq = {q.offset, q.step};
-    const int pos = doc.accessor(doc.meshoptView(compressAttributes(q.values.data(), n, 8), n, 8,
-                                                 kArrayBuffer, "ATTRIBUTES", "NONE"),
-                                 kUnsignedShort, n, "VEC3");
-    doc.gltf["accessors"][pos]["min"] = {q.min.x, q.min.y, q.min.z};
-    doc.gltf["accessors"][pos]["max"] = {q.max.x, q.max.y, q.max.z};
-    attributes["POSITION"] = pos;
-    if (!m.normals.empty()) {
-        const std::vector<std::int8_t> oct = octahedralNormals(m.normals);
-        attributes["NORMAL"] =
-            doc.accessor(doc.meshoptView(compressAttributes(oct.data(), n, 4), n, 4, kArrayBuffer,
-                                         "ATTRIBUTES", "OCTAHEDRAL"),
-                         kByte, n, "VEC3", true);
-    }
-    if (!m.uvs.empty()) {
-        const std::vector<std::uint32_t> exp = exponentialUvs(m.uvs);
-        attributes["TEXCOORD_0"] =
-            doc.accessor(doc.meshoptView(compressAttributes(exp.data(), n, 8), n, 8, kArrayBuffer,
-                                         "ATTRIBUTES", "EXPONENTIAL"),
-                         kFloat, n, "VEC2");
-    }
-    if (!m.colors.empty()) {
-        attributes["COLOR_0"] =
-            doc.accessor(doc.meshoptView(compressAttributes(m.colors.data(), n, 4), n, 4,
-                                         kArrayBuffer, "ATTRIBUTES", "NONE"),
-                         kUnsignedByte, n, "VEC4", true);
-    }
-    return attributes;
-}
-
-int indexAccessor(Doc& doc, const GlbMesh& m, bool meshopt) {
-    const bool shortIndices = m.positions.size() <= 65535;
-    const std::size_t count = m.indices.size(), size = shortIndices ? 2 : 4;
-    const int type = shortIndices ? kUnsignedShort : kUnsignedInt;
-    if (meshopt) {
-        const int view = doc.meshoptView(compressTriangles(m.indices, m.positions.size()), count,
-                                         size, kElementArrayBuffer, "TRIANGLES", "NONE");
-        return doc.accessor(view, type, count, "SCALAR");
-    }
-    if (!shortIndices)
-        return doc.accessor(doc.plainView(m.indices.data(), count * 4, kElementArrayBuffer), type,
-                            count, "SCALAR");
-    std::vector<std::uint16_t> narrow(m.indices.begin(), m.indices.end());
-    return doc.accessor(doc.plainView(narrow.data(), count * 2, kElementArrayBuffer), type, count,
+// Triangles over `vertexCount` vertices into the 16- or 32-bit index stream; the accessor.
+int addIndices(Doc& doc, std::span<const std::uint32_t> indices, std::size_t vertexCount) {
+    const bool shortIndices = vertexCount <= 65535;
+    const Stream s = shortIndices ? kIndices16 : kIndices32;
+    StreamData& d = doc.streams[s];
+    const std::size_t first = d.count;
+    d.indices.insert(d.indices.end(), indices.begin(), indices.end());
+    d.count += indices.size();
+    return doc.accessor(s, first, indices.size(), shortIndices ? kUnsignedShort : kUnsignedInt,
                         "SCALAR");
 }
 
+// Every stream as one buffer view; the accessors pointed at theirs.
+void finishStreams(Doc& doc) {
+    int viewOf[kStreams];
+    for (int s = 0; s < kStreams; ++s) {
+        const Stream stream = static_cast<Stream>(s);
+        StreamData& d = doc.streams[s];
+        viewOf[s] = -1;
+        if (d.count == 0) continue;
+        const std::size_t stride = strideOf(stream, doc.meshopt);
+        const bool indices = stream == kIndices16 || stream == kIndices32;
+        if (doc.meshopt && indices) {
+            std::uint32_t top = 0;
+            for (std::uint32_t i : d.indices)
+                top = std::max(top, i);
+            viewOf[s] = doc.meshoptView(compressTriangles(d.indices, std::size_t(top) + 1), d.count,
+                                        stride, kElementArrayBuffer, "TRIANGLES", "NONE");
+        } else if (doc.meshopt) {
+            const char* filter = stream == kNormals ? "OCTAHEDRAL"
+                                 : stream == kUvs   ? "EXPONENTIAL"
+                                                    : "NONE";
+            viewOf[s] = doc.meshoptView(compressAttributes(d.bytes.data(), d.count, stride),
+                                        d.count, stride, kArrayBuffer, "ATTRIBUTES", filter);
+        } else if (stream == kIndices16) {
+            const std::vector<std::uint16_t> narrow(d.indices.begin(), d.indices.end());
+            viewOf[s] = doc.plainView(narrow.data(), d.count * 2, kElementArrayBuffer);
+        } else if (indices) {
+            viewOf[s] = doc.plainView(d.indices.data(), d.count * 4, kElementArrayBuffer);
+        } else {
+            // Several accessors share the view: byteStride is required (glTF 2.0, 3.6.2.3).
+            viewOf[s] = doc.plainView(d.bytes.data(), d.bytes.size(), kArrayBuffer, stride);
+        }
+    }
+    for (const auto& [accessor, stream] : doc.streamAccessors)
+        doc.gltf["accessors"][std::size_t(accessor)]["bufferView"] = viewOf[stream];
+}
+
 // The node's TRS composed with its mesh's dequantization: frame = T R S (offset + step q).
-nlohmann::json nodeJson(const GlbNode& node, int mesh, const Dequantization& dq) {
+nlohmann::json nodeJson(const GlbNode& node, int mesh, const PositionGrid& dq) {
     nlohmann::json j = nlohmann::json::object();
     if (!node.name.empty()) j["name"] = node.name;
     Trs trs = node.trs;
@@ -250,46 +331,54 @@ nlohmann::json nodeJson(const GlbNode& node, int mesh, const Dequantization& dq)
     }
     const glm::dvec3& t = trs.translation;
     const glm::dquat& r = trs.rotation;
-    if (t != glm::dvec3(0.0)) j["translation"] = {t.x, t.y, t.z};
-    if (r != glm::dquat(1.0, 0.0, 0.0, 0.0)) j["rotation"] = {r.x, r.y, r.z, r.w};
-    if (trs.scale != glm::dvec3(1.0)) j["scale"] = {trs.scale.x, trs.scale.y, trs.scale.z};
+    const glm::dvec3& s = trs.scale;
+    if (t != glm::dvec3(0.0))
+        j["translation"] = {shortDouble(t.x), shortDouble(t.y), shortDouble(t.z)};
+    if (r != glm::dquat(1.0, 0.0, 0.0, 0.0))
+        j["rotation"] = {shortDouble(r.x), shortDouble(r.y), shortDouble(r.z), shortDouble(r.w)};
+    if (s != glm::dvec3(1.0)) j["scale"] = {shortDouble(s.x), shortDouble(s.y), shortDouble(s.z)};
     return j;
+}
+
+// The glTF mesh of `m` (one primitive), its vertices and indices added to the streams.
+nlohmann::json meshJson(Doc& doc, const GlbMesh& m, PositionGrid& grid) {
+    nlohmann::json attributes = addVertices(doc, m, grid);
+    const int indices = addIndices(doc, m.indices, m.positions.size());
+    nlohmann::json mesh = {{"primitives",
+                            {{{"attributes", std::move(attributes)},
+                              {"indices", indices},
+                              {"material", materialIndex(doc, m)}}}}};
+    if (!m.name.empty()) mesh["name"] = m.name;
+    return mesh;
 }
 
 // The JSON and BIN chunk of `scene`.
 Doc buildDoc(const GlbScene& scene) {
-    const bool meshopt = scene.compression == GlbCompression::Meshopt;
     Doc doc;
+    doc.meshopt = scene.compression == GlbCompression::Meshopt;
     nlohmann::json& gltf = doc.gltf;
     gltf["asset"] = {{"version", "2.0"}, {"generator", "HLOD Studio " HLOD_VERSION}};
     gltf["scene"] = 0;
-    std::vector<int> meshIndex(scene.meshes.size(), -1);
-    std::vector<Dequantization> dequant(scene.meshes.size());
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    const std::size_t count = scene.meshes.size();
+    std::vector<int> meshIndex(count, -1);
+    std::vector<PositionGrid> grid(count);
+    for (std::size_t i = 0; i < count; ++i) {
         const GlbMesh& m = scene.meshes[i];
         check(m);
         if (m.indices.empty()) continue;
-        nlohmann::json attributes =
-            meshopt ? meshoptAttributes(doc, m, dequant[i]) : plainAttributes(doc, m);
-        const int indices = indexAccessor(doc, m, meshopt);
-        const int material = materialIndex(doc, m);
-        gltf["meshes"].push_back({{"primitives",
-                                   {{{"attributes", std::move(attributes)},
-                                     {"indices", indices},
-                                     {"material", material},
-                                     {"mode", 4}}}}});
-        if (!m.name.empty()) gltf["meshes"].back()["name"] = m.name;
+        gltf["meshes"].push_back(meshJson(doc, m, grid[i]));
         meshIndex[i] = static_cast<int>(gltf["meshes"].size()) - 1;
     }
+    finishStreams(doc);
     nlohmann::json roots = nlohmann::json::array();
     for (const GlbNode& node : scene.nodes) {
-        if (node.mesh < -1 || node.mesh >= static_cast<int>(scene.meshes.size()))
+        if (node.mesh < -1 || node.mesh >= static_cast<int>(count))
             throw Error(ErrorCode::InvalidArgument,
                         "GLB node '" + node.name + "' names a mesh that does not exist");
         const int mesh = node.mesh < 0 ? -1 : meshIndex[static_cast<std::size_t>(node.mesh)];
         roots.push_back(gltf["nodes"].size());
         gltf["nodes"].push_back(
-            nodeJson(node, mesh, mesh < 0 ? Dequantization{} : dequant[std::size_t(node.mesh)]));
+            nodeJson(node, mesh, mesh < 0 ? PositionGrid{} : grid[std::size_t(node.mesh)]));
     }
     gltf["scenes"] = nlohmann::json::array({{{"nodes", std::move(roots)}}});
     if (!doc.bin.empty()) gltf["buffers"].push_back({{"byteLength", doc.bin.size()}});

@@ -10,11 +10,23 @@
 // schema): little-endian chunks padded to 4 bytes, POSITION min/max present, index type the
 // smallest of unsigned short / unsigned int that fits.
 //
+// Compact JSON (tile contents are small files, their JSON used to outweigh their geometry):
+// one buffer view per kind of stream for the whole file (all positions, all normals, all uvs,
+// all colours, all 16-bit and all 32-bit indices; embedded images one view each), accessors
+// being ranges of them (byteOffset), as gltfpack writes them. Properties at their default value
+// are left out (byteOffset 0, primitive mode 4, roughness 1, a white base colour, alpha cut-off
+// 0.5, repeat wrapping); min/max only on POSITION, where the specification requires them;
+// material factors as the shortest decimal that reads back as the same float, whole numbers
+// without a fraction; a material is named only when it has a name of its own
+// (GlbMesh::materialName), a mesh only when it has one; no white space. Identical images (same
+// URI) and their textures are written once, the one sampler once.
+//
 // Compression (GlbCompression::Meshopt): KHR_mesh_quantization + EXT_meshopt_compression, both
 // required (GlbMeshopt.h: 16-bit grid positions whose offset and step the referencing nodes'
-// transforms carry, octahedral normals, exponential uvs, meshopt vertex and index codecs). The
-// compressed streams live in buffer 0 (the BIN chunk); buffer 1 is the extension's fallback
-// buffer without data. None: plain float attributes, nothing required.
+// transforms carry, octahedral normals, exponential uvs, meshopt vertex and index codecs; each
+// buffer view compressed as one stream). The compressed streams live in buffer 0 (the BIN
+// chunk); buffer 1 is the extension's fallback buffer without data. None: plain float
+// attributes, nothing required.
 //
 // Output bytes depend only on the input (deterministic, suitable for content hashing).
 // A mesh without triangles is not written (its nodes carry no mesh).
@@ -50,7 +62,7 @@ struct GlbMesh {
     std::span<const glm::u8vec4> colors; // empty or one per position (linear RGBA)
     std::span<const std::uint32_t> indices;
     glm::vec4 baseColor{1.0f};
-    std::string materialName; // empty: the mesh's name
+    std::string materialName; // empty: the material has no name
     // Optional base colour texture (PNG or JPEG bytes, see TextureImage.h), embedded in the BIN
     // chunk and sampled with TEXCOORD_0 (repeat wrap, linear filtering). Ignored without uvs.
     std::span<const std::uint8_t> image;
@@ -59,7 +71,7 @@ struct GlbMesh {
     // against the GLB's folder. Used when `image` is empty; also ignored without uvs.
     std::string imageUri;
     // Meshopt only: the position grid asked for (metres of the mesh's frame; 0 = the finest
-    // 16 bits allow). The grid used is positionGridStep (GlbMeshopt.h) of it.
+    // 16 bits allow). The grid used is positionGrid (GlbMeshopt.h) of it over the mesh's bounds.
     double positionStep = 0.0;
     // glTF alphaMode MASK with this cut-off (textured cut-outs, e.g. a proxy atlas with
     // alpha); otherwise OPAQUE, or BLEND when baseColor.a < 1.

@@ -4,6 +4,7 @@
 // errors on broken compressed files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -170,4 +171,81 @@ TEST(GlbMeshopt, GltfpackStyleSceneWithExternalBufferImports) {
     EXPECT_EQ(s.meshes.at(0).indices, q.indices);
     ASSERT_EQ(s.referencedFiles.size(), 1u);
     EXPECT_EQ(s.referencedFiles[0].filename(), "q.bin");
+}
+
+TEST(GlbMeshopt, GridOriginIsAShortDecimalThatStillSpansTheBoundsIn16Bits) {
+    // 2^-10 m asked over 3 m: 16 bits leave 61 m of slack, so the origin rounds to whole metres.
+    const PositionGrid g = positionGrid(glm::dvec3(-33.83799743652344, 0.013, 1.5),
+                                        glm::dvec3(-30.9, 2.0, 4.5), 0.001);
+    EXPECT_EQ(g.step, 0.0009765625);
+    EXPECT_EQ(g.offset, glm::dvec3(-34.0, 0.0, 1.0));
+    // Finest grid: hardly any slack; the origin stays at or below the bounds and spans them.
+    const glm::dvec3 lo(0.123456789, -7.654321, 1000.000123), hi = lo + glm::dvec3(100.0);
+    const PositionGrid f = positionGrid(lo, hi, 0.0);
+    EXPECT_EQ(f.step, positionGridStep(100.0, 0.0));
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(f.offset[a], lo[a]);
+        EXPECT_LE(hi[a] - f.offset[a], 65535.0 * f.step);
+    }
+}
+
+namespace {
+
+// Each triangle rotated to start at its smallest corner.
+std::vector<std::uint32_t> rotated(std::vector<std::uint32_t> indices) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        while (indices[t] > indices[t + 1] || indices[t] > indices[t + 2])
+            std::rotate(indices.begin() + long(t), indices.begin() + long(t) + 1,
+                        indices.begin() + long(t) + 3);
+    return indices;
+}
+
+} // namespace
+
+TEST(GlbMeshopt, MeshesSharingCompressedStreamsReadBackWithinTheirQuantisation) {
+    // Three meshes of different sizes and placements in one file: their positions, normals,
+    // uvs and indices each one compressed view, every accessor a range of it.
+    const Quad q;
+    std::vector<glm::vec3> far = q.positions, big = q.positions;
+    for (glm::vec3& p : far)
+        p += glm::vec3(-123.4f, 56.7f, 8.9f);
+    for (glm::vec3& p : big)
+        p *= 37.0f;
+    const std::vector<std::uint32_t> reversed{0, 2, 1, 0, 3, 2};
+    GlbScene s = twoQuads(q, GlbCompression::Meshopt);
+    s.meshes.push_back(q.view());
+    s.meshes.back().positions = far;
+    s.meshes.back().indices = reversed;
+    s.meshes.push_back(q.view());
+    s.meshes.back().positions = big;
+    s.meshes.back().positionStep = 0.01;
+    for (int i : {1, 2}) {
+        GlbNode n;
+        n.mesh = i;
+        s.nodes.push_back(n);
+    }
+    const std::vector<std::uint8_t> bytes = encodeGlb(s);
+    const nlohmann::json j = nlohmann::json::parse(splitGlb(bytes, "q.glb").json);
+    EXPECT_EQ(j["bufferViews"].size(), 5u); // positions, normals, uvs, colours, indices
+    test::TempDir dir;
+    const Scene packed = roundTrip(bytes, dir);
+    ASSERT_EQ(packed.instances.size(), 4u);
+    ASSERT_EQ(packed.meshes.size(), 3u);
+    const std::vector<const std::vector<glm::vec3>*> positions{&q.positions, &far, &big};
+    const double steps[] = {0.0009765625, 0.0009765625, 0.0078125};
+    for (Id inst = 0; inst < 4; ++inst) {
+        if (inst == 1) continue; // the turned copy: CompressedSceneReadsBackWithinItsQuantisation
+        const Id mesh = packed.instances[inst].mesh;
+        const std::size_t k = inst == 0 ? 0 : inst - 1;
+        // The index codec may rotate a triangle's corners (never its winding).
+        EXPECT_EQ(rotated(packed.meshes[mesh].indices), rotated(k == 1 ? reversed : q.indices));
+        for (std::size_t v = 0; v < 4; ++v) {
+            const glm::dvec3 d = worldOf(packed, inst, v) - glm::dvec3((*positions[k])[v]);
+            for (int a = 0; a < 3; ++a)
+                EXPECT_LE(std::abs(d[a]), steps[k] / 2 + 1e-5) << inst << " " << v;
+            EXPECT_NEAR(packed.meshes[mesh].uvs[v].x, q.uvs[v].x, 1e-4);
+            EXPECT_GT(glm::dot(glm::normalize(packed.meshes[mesh].normals[v]), q.normals[v]),
+                      0.9997f);
+        }
+    }
 }

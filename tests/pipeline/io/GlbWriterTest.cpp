@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <cstring>
+
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include "TestUtil.h"
 #include "pipeline/io/GlbWriter.h"
+#include "pipeline/io/GltfMeshopt.h"
 
 using namespace hlod;
 
@@ -90,4 +94,103 @@ TEST(GlbWriter, RejectsIndicesOutOfRange) {
     Quad q;
     q.indices[4] = 9;
     EXPECT_THROW(encodeGlb(q.view()), std::exception);
+}
+
+namespace {
+
+// Two quads of different looks and a triangle, each under its own node.
+struct ThreeMeshes {
+    Quad a, b;
+    std::vector<glm::vec3> triangle{{5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+    std::vector<std::uint32_t> triangleIndices{0, 1, 2};
+    std::vector<glm::vec2> uvs{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    GlbScene scene(GlbCompression compression, bool textured = false) const {
+        GlbScene s;
+        s.compression = compression;
+        s.meshes = {a.view(), b.view(), a.view()};
+        s.meshes[1].name = "";
+        s.meshes[1].baseColor = {0.4f, 0.4f, 0.4f, 1.0f};
+        s.meshes[1].materialName = "grey";
+        if (textured) {
+            s.meshes[1].uvs = uvs;
+            s.meshes[1].imageUri = "textures/t.png";
+        }
+        s.meshes[2].positions = triangle;
+        s.meshes[2].normals = {};
+        s.meshes[2].colors = {};
+        s.meshes[2].indices = triangleIndices;
+        for (int i = 0; i < 3; ++i) {
+            GlbNode n;
+            n.mesh = i;
+            n.trs.translation = {double(i), 0.0, 0.0};
+            s.nodes.push_back(n);
+        }
+        return s;
+    }
+};
+
+} // namespace
+
+TEST(GlbWriter, OneBufferViewPerStreamAndNoDefaultsInTheJson) {
+    const ThreeMeshes t;
+    for (GlbCompression c : {GlbCompression::None, GlbCompression::Meshopt}) {
+        const std::vector<std::uint8_t> bytes = encodeGlb(t.scene(c, true));
+        const std::string text = splitGlb(bytes, "t.glb").json;
+        const nlohmann::json j = nlohmann::json::parse(text);
+        // Positions, normals, uvs, colours, 16-bit indices: five views for three meshes.
+        EXPECT_EQ(j["bufferViews"].size(), 5u) << toString(c);
+        EXPECT_EQ(j["samplers"], nlohmann::json::parse(R"([{"magFilter":9729,"minFilter":9987}])"));
+        EXPECT_EQ(j["meshes"].size(), 3u);
+        EXPECT_EQ(j["accessors"][0].count("byteOffset"), 0u); // 0 is the default
+        // The second mesh's positions start after the first's four.
+        const auto& pos1 =
+            j["accessors"][j["meshes"][1]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+        EXPECT_EQ(pos1["bufferView"], 0);
+        EXPECT_EQ(pos1["byteOffset"], c == GlbCompression::Meshopt ? 32 : 48);
+        for (const char* absent : {"\"mode\":4", "roughnessFactor", "wrapS", "\"byteOffset\":0",
+                                   "\"name\":\"\"", ": ", ", ", "\n", ".0,", ".0]"})
+            EXPECT_EQ(text.find(absent), std::string::npos) << absent << " in " << text;
+        // Factors as the shortest decimal of the float; white is the default.
+        EXPECT_NE(text.find("[0.4,0.4,0.4,1]"), std::string::npos) << text;
+        EXPECT_EQ(j["materials"].size(), 2u); // meshes 0 and 2 look alike
+        EXPECT_EQ(j["materials"][1]["name"], "grey");
+        EXPECT_EQ(j["materials"][0].count("name"), 0u); // no name of its own
+        EXPECT_EQ(j["meshes"][1].count("name"), 0u);
+        EXPECT_EQ(bytes, encodeGlb(t.scene(c, true))); // deterministic
+    }
+}
+
+TEST(GlbWriter, MeshesSharingViewsReadBackInTinyGltf) {
+    const ThreeMeshes t;
+    const tinygltf::Model model = load(encodeGlb(t.scene(GlbCompression::None)));
+    ASSERT_EQ(model.meshes.size(), 3u);
+    // Every accessor read through its view's offset and stride gives the mesh's own values.
+    auto element = [&](int accessor, std::size_t i) {
+        const tinygltf::Accessor& a = model.accessors[std::size_t(accessor)];
+        const tinygltf::BufferView& v = model.bufferViews[std::size_t(a.bufferView)];
+        const std::size_t stride = v.byteStride ? v.byteStride : 2;
+        return model.buffers[0].data.data() + v.byteOffset + a.byteOffset + i * stride;
+    };
+    const std::vector<const std::vector<glm::vec3>*> positions{&t.a.positions, &t.b.positions,
+                                                               &t.triangle};
+    for (std::size_t m = 0; m < 3; ++m) {
+        const tinygltf::Primitive& p = model.meshes[m].primitives[0];
+        EXPECT_EQ(p.mode, TINYGLTF_MODE_TRIANGLES); // the default
+        for (std::size_t i = 0; i < positions[m]->size(); ++i) {
+            glm::vec3 v;
+            std::memcpy(&v, element(p.attributes.at("POSITION"), i), 12);
+            EXPECT_EQ(v, (*positions[m])[i]) << m << " " << i;
+        }
+        const std::vector<std::uint32_t>& indices = m == 2 ? t.triangleIndices : t.a.indices;
+        ASSERT_EQ(model.accessors[std::size_t(p.indices)].count, indices.size());
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            std::uint16_t k;
+            std::memcpy(&k, element(p.indices, i), 2);
+            EXPECT_EQ(k, indices[i]) << m << " " << i;
+        }
+    }
+    EXPECT_EQ(model.meshes[2].primitives[0].attributes.count("NORMAL"), 0u);
+    EXPECT_EQ(model.materials[0].pbrMetallicRoughness.roughnessFactor, 1.0);
+    EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorFactor,
+              (std::vector<double>{1, 1, 1, 1}));
 }
