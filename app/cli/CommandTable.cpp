@@ -57,7 +57,31 @@ std::vector<CommandSpec> makeCommands() {
                   {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
                                        "and hand edits)."}},
                  {N::Import, N::Cluster, N::Bake, N::Export},
-                 {kJson}});
+                 {{"--shard", "", "I/N",
+                   "Distributed bake: bake only shard I (0 to N-1) of the plan hlod plan wrote "
+                   "into --cache DIR, then exit; auto/N takes I from SLURM_ARRAY_TASK_ID, "
+                   "JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX. The scene and parameters "
+                   "come from the plan (only --cache and --threads go with it). A build without "
+                   "--shard whose --cache holds its plan is the final step: it checks every "
+                   "shard has finished, bakes the nodes above the cut and writes the package.",
+                   ""},
+                  kJson}});
+    v.push_back({"plan",
+                 runPlan,
+                 {"hlod plan [SCENE...] --shards N --cache DIR [options]",
+                  "hlod plan PROJECT.hlodproj --shards N --cache DIR [options]"},
+                 "First step of a distributed bake: imports and clusters the scene once, cuts "
+                 "the tree into N shards of balanced estimated bake cost (input triangles) and "
+                 "writes the plan into the shared cache folder DIR: the tree, each shard's slice "
+                 "of the scene (only its meshes) and the bake parameters. Then run hlod build "
+                 "--shard I/N --cache DIR for every I (a Slurm job array: scripts/slurm/), and "
+                 "finally hlod build SCENE -o PKG --cache DIR with the same flags as the plan: "
+                 "the package is byte-identical to a single machine's.",
+                 {scene,
+                  {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
+                                       "and hand edits)."}},
+                 {N::Import, N::Cluster, N::Bake},
+                 {{"--shards", "", "N", "Number of shards (1 to 100000).", ""}, kJson}});
     v.push_back(
         {"bench",
          runBench,

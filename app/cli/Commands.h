@@ -11,6 +11,7 @@ namespace hlod::cli {
 int runInfo(const CommandArgs& args);
 int runCluster(const CommandArgs& args);
 int runBuild(const CommandArgs& args);
+int runPlan(const CommandArgs& args);  // cmd_plan.cpp: first step of a distributed bake
 int runBench(const CommandArgs& args); // cmd_bench.cpp: thesis evaluation (needs VTK, X)
 
 } // namespace hlod::cli

@@ -13,7 +13,17 @@
 // default graph Import -> Cluster -> Bake -> Export runs over the SCENE files.
 // The summary ends with the package's bytes on disk (allocated blocks) and file count next to
 // the source's (the scene files and every file they reference), and their ratio.
+//
+// Distributed bake (issue 21, pipeline/graph/BakePlan.h): `hlod build --shard I/N --cache DIR`
+// (or `auto/N`: I from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or AWS_BATCH_JOB_ARRAY_INDEX)
+// bakes shard I of the plan `hlod plan` wrote into DIR and exits; it takes the scene and the
+// parameters from the plan (only --threads may be given). A plain build whose cache folder
+// holds the plan for its scene and parameters is the final step: it first checks that every
+// shard has finished (else it fails naming the missing ones), then bakes the nodes above the
+// cut, finds the rest in the cache, and writes the package a single machine writes.
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -22,9 +32,10 @@
 
 #include "Args.h"
 #include "Commands.h"
+#include "DocumentInput.h"
 #include "ProgressBar.h"
 #include "pipeline/core/Error.h"
-#include "pipeline/doc/ProjectFile.h"
+#include "pipeline/graph/BakePlan.h"
 #include "pipeline/proxy/BakeStats.h"
 
 namespace hlod::cli {
@@ -33,24 +44,6 @@ namespace {
 
 const std::vector<NodeKind> kAllKinds{NodeKind::Import, NodeKind::Cluster, NodeKind::Bake,
                                       NodeKind::Export};
-
-bool isProjectFile(const std::string& arg) {
-    const std::string ext = kProjectExtension;
-    return arg.size() > ext.size() && arg.compare(arg.size() - ext.size(), ext.size(), ext) == 0;
-}
-
-// The project's document, or the default graph over the SCENE arguments.
-Document loadDocument(const std::vector<std::string>& positionals) {
-    for (const std::string& p : positionals) {
-        if (!isProjectFile(p)) continue;
-        if (positionals.size() != 1) {
-            throw Error(ErrorCode::InvalidArgument,
-                        "a project file is built on its own (its scenes are in the project)");
-        }
-        return openProject(p);
-    }
-    return Document(std::vector<std::filesystem::path>(positionals.begin(), positionals.end()));
-}
 
 void printTable(const std::vector<GeometryStats>& rows) {
     std::printf("%-20s %12s %12s %8s %12s\n", "version", "triangles", "vertices", "meshes",
@@ -93,7 +86,7 @@ void printDisk(const ExportResult& ex) {
     std::printf("\n");
 }
 
-void printJson(const NodeOutput& out) {
+void printJson(const NodeOutput& out, const PlanCheck& plan) {
     const ExportResult& ex = *out.exported;
     nlohmann::json j = buildTreeJson(*out.scene, *out.tree, *out.bake, ex.info);
     j.erase("nodes");
@@ -111,6 +104,13 @@ void printJson(const NodeOutput& out) {
     j["disk_ratio"] = ex.source.bytesOnDisk
                           ? static_cast<double>(ex.written.bytesOnDisk) / ex.source.bytesOnDisk
                           : 0.0;
+    if (plan.matches) {
+        j["plan"] = {{"id", plan.id},
+                     {"shards", plan.shards},
+                     {"above_cut", plan.aboveCut},
+                     {"baked_here", out.bake->baked},
+                     {"damaged", out.bake->damaged}};
+    }
     j["seconds"] = {{"cluster", out.clusterSeconds},
                     {"bake", out.bake->seconds},
                     {"dlod", ex.dlodSeconds},
@@ -118,7 +118,7 @@ void printJson(const NodeOutput& out) {
     std::cout << j.dump(2) << "\n";
 }
 
-void printSummary(const NodeOutput& out) {
+void printSummary(const NodeOutput& out, const PlanCheck& plan) {
     const ExportResult& ex = *out.exported;
     const BakeResult& bake = *out.bake;
     const ClusterTree& tree = *out.tree;
@@ -137,6 +137,11 @@ void printSummary(const NodeOutput& out) {
                 "(%zu input triangles)\n",
                 toString(bp.method), bp.screen.screenSize, bp.screen.pixelError, bake.baked,
                 bake.reused, bake.seconds, bake.inputTriangles);
+    if (plan.matches) {
+        std::printf("plan:         %s: all %d shards finished; baked here %zu (%zu nodes above the "
+                    "cut), the rest from the shards\n",
+                    plan.id.c_str(), plan.shards, bake.baked, plan.aboveCut);
+    }
     std::printf("proxy share:  all proxies %.1f%% of the original triangles, root proxy %.2f%%, "
                 "a proxy %.1f%% of what it replaces\n",
                 ex.info.share.allProxies * 100.0, ex.info.share.rootProxy * 100.0,
@@ -148,18 +153,118 @@ void printSummary(const NodeOutput& out) {
     printDisk(ex);
 }
 
+// `--shard I/N` or `auto/N`: the index and the count.
+std::pair<int, int> parseShard(const std::string& text) {
+    const auto slash = text.find('/');
+    auto number = [&](const std::string& part) {
+        int v = -1;
+        const auto [ptr, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+        return ec == std::errc() && ptr == part.data() + part.size() ? v : -1;
+    };
+    const int n = slash == std::string::npos ? -1 : number(text.substr(slash + 1));
+    const std::string first = slash == std::string::npos ? "" : text.substr(0, slash);
+    const int i = first == "auto" ? shardIndexFromEnvironment(std::getenv) : number(first);
+    if (n < 1 || i < 0 || i >= n) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "--shard expects I/N with 0 <= I < N, or auto/N, got '" + text + "'");
+    }
+    return {i, n};
+}
+
+// `hlod build --shard I/N --cache DIR`: one shard of the plan in DIR.
+int runShardBuild(const Args& args, const ParamFlags& flags) {
+    if (!args.positionals().empty()) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "a shard takes its scene from the plan: hlod build --shard I/N --cache DIR (no "
+                    "SCENE)");
+    }
+    std::filesystem::path cache;
+    int threads = 0;
+    for (const auto& [decl, value] : flags) {
+        if (decl->key == "cache_dir") {
+            cache = std::get<std::string>(value);
+        } else if (decl->key == "threads") {
+            threads = std::get<int>(value);
+        } else {
+            throw Error(ErrorCode::InvalidArgument,
+                        decl->cliFlag + " cannot be given with --shard: a shard takes its "
+                                        "parameters from the plan (hlod plan; only --cache and "
+                                        "--threads go here)");
+        }
+    }
+    if (cache.empty()) throw Error(ErrorCode::InvalidArgument, "--shard needs --cache DIR");
+    const auto [index, shards] = parseShard(*args.value("--shard"));
+    ProgressBar bar;
+    const ShardResult r = runBakeShard(cache, index, shards, threads, bar.progress());
+    bar.finish();
+    const ProcessUsage use = processUsage();
+    if (args.has("--json")) {
+        const nlohmann::json j = {{"shard", r.index},
+                                  {"shards", r.shards},
+                                  {"subtrees", r.subtrees},
+                                  {"inner_nodes", r.innerNodes},
+                                  {"baked", r.baked},
+                                  {"reused", r.reused},
+                                  {"damaged", r.corrupt},
+                                  {"meshes", r.meshes},
+                                  {"triangles", r.triangles},
+                                  {"seconds", r.seconds},
+                                  {"cpu_seconds", use.cpuSeconds},
+                                  {"peak_bytes", use.peakBytes},
+                                  {"marker", r.marker.string()}};
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    std::printf("shard:        %d/%d of the plan in %s\n", r.index, r.shards,
+                planFolder(cache).string().c_str());
+    std::printf("subtrees:     %zu (%zu inner nodes); slice %zu meshes, %zu triangles\n",
+                r.subtrees, r.innerNodes, r.meshes, r.triangles);
+    std::printf("proxies:      baked %zu, reused %zu in %.2f s (cpu %.2f s, peak memory %.0f MB)\n",
+                r.baked, r.reused, r.seconds, use.cpuSeconds,
+                static_cast<double>(use.peakBytes) / 1e6);
+    if (r.corrupt > 0)
+        std::printf("damaged:      %zu cache files were damaged and baked again\n", r.corrupt);
+    std::printf("done:         %s\n", r.marker.string().c_str());
+    return 0;
+}
+
+// The final step of a distributed bake: when the cache folder holds the plan of this very
+// build, every shard must have finished. Returns the check (found false without a plan).
+PlanCheck checkPlanBeforeBake(PipelineGraph& graph, NodeId exportNode, const Progress& progress) {
+    const NodeId bakeNode = graph.upstreamOf(exportNode);
+    if (bakeNode == kNoNode || graph.node(bakeNode).kind != NodeKind::Bake) return {};
+    const BakeParams params = bakeParamsFrom(graph.node(bakeNode).params);
+    std::error_code ec;
+    if (params.cacheDir.empty() ||
+        !std::filesystem::exists(planFolder(params.cacheDir) / "plan.json", ec))
+        return {};
+    const NodeId clusterNode = graph.upstreamOf(bakeNode);
+    if (clusterNode == kNoNode) return {};
+    graph.run({clusterNode}, progress);
+    const NodeOutput& out = *graph.output(clusterNode);
+    PlanCheck check = checkBakePlan(params.cacheDir, *out.scene, *out.tree, params);
+    if (check.found && !check.matches) {
+        std::fprintf(stderr,
+                     "hlod build: warning: %s holds a plan for another scene or other parameters; "
+                     "baking everything here\n",
+                     planFolder(params.cacheDir).string().c_str());
+    } else if (check.matches && !check.missing.empty()) {
+        throw Error(ErrorCode::FileNotFound, planFolder(params.cacheDir),
+                    describeMissingShards(check) + ": run hlod build --shard I/" +
+                        std::to_string(check.shards) + " --cache " + params.cacheDir.string() +
+                        " for them, or wait for their jobs");
+    }
+    return check;
+}
+
 } // namespace
 
 int runBuild(const CommandArgs& argv) {
     const Args args(argv, command("build"));
-    const auto flags = paramsFromArgs(args, kAllKinds); // usage errors before any work
-    Document doc = loadDocument(args.positionals());
+    const ParamFlags flags = paramsFromArgs(args, kAllKinds); // usage errors before any work
+    if (args.has("--shard")) return runShardBuild(args, flags);
+    Document doc = documentFromArgs(args.positionals(), flags);
     PipelineGraph& graph = doc.graph();
-    for (const auto& [decl, value] : flags) {
-        for (NodeId id : graph.nodeIds()) {
-            if (graph.node(id).kind == decl->node) graph.setParam(id, decl->key, value);
-        }
-    }
     const NodeId exportNode = graph.firstOf(NodeKind::Export);
     if (exportNode == kNoNode)
         throw Error(ErrorCode::InvalidArgument, "the project has no export node");
@@ -167,13 +272,20 @@ int runBuild(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument, "missing -o DIR (output folder)");
 
     ProgressBar bar;
+    const PlanCheck plan = checkPlanBeforeBake(graph, exportNode, bar.progress());
     graph.run({exportNode}, bar.progress());
     bar.finish();
     const NodeOutput& out = *graph.output(exportNode);
+    if (const std::size_t n = out.bake->damaged; n > 0) {
+        std::fprintf(stderr,
+                     "hlod build: warning: %zu damaged proxy %s in the cache %s not trusted and "
+                     "%s baked again\n",
+                     n, n == 1 ? "file" : "files", n == 1 ? "was" : "were", n == 1 ? "was" : "were");
+    }
     if (args.has("--json")) {
-        printJson(out);
+        printJson(out, plan);
     } else {
-        printSummary(out);
+        printSummary(out, plan);
     }
     return 0;
 }

@@ -49,6 +49,13 @@ ExportResult exportPackage(const BuildInputs& in, const ExportOptions& options,
     package.compression = options.compression;
     nlohmann::json summary = buildTreeJson(in.scene, in.tree, in.bake, out.info);
     summary.erase("nodes"); // the package manifest has its own node list
+    // What this run did (proxies baked or found in the cache, its time) is not part of the
+    // package: the same inputs make the same bytes whatever the cache held, which is what lets
+    // a distributed bake's final step write a single machine's package (BakePlan.h).
+    if (auto bake = summary.find("bake"); bake != summary.end() && bake->is_object()) {
+        for (const char* key : {"baked", "reused", "seconds"})
+            bake->erase(key);
+    }
     package.parameters = summary.value("parameters", nlohmann::json::object());
     package.statistics = summary;
     out.written =

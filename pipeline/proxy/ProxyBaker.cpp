@@ -31,11 +31,12 @@ namespace {
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
 constexpr std::uint64_t kBakeFormatVersion = 7;
 
-// Children before parents, only nodes reachable from the root.
-std::vector<Id> postOrder(const ClusterTree& tree) {
+// Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
+std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {
     std::vector<Id> order;
-    if (tree.root == kNoId) return order;
-    std::vector<std::pair<Id, bool>> stack{{tree.root, false}};
+    std::vector<std::pair<Id, bool>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.push_back({*it, false});
     while (!stack.empty()) {
         auto [id, expanded] = stack.back();
         stack.pop_back();
@@ -90,6 +91,15 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
         break;
     }
     hashAtlasOptions(h, params.atlas);
+}
+
+// A node's key from its inputs' keys and quantised offsets in its frame (its inputs in order).
+// partsOf and structuralKeys must hash the same values in the same order.
+void hashNodeHead(ContentHash& h, const BakeParams& params, double errorBudget,
+                  std::size_t inputs) {
+    hashOptions(h, params);
+    h.addValue(errorBudget);
+    h.addValue(static_cast<std::uint64_t>(inputs));
 }
 
 std::uint64_t hashMesh(const Mesh& mesh) {
@@ -184,7 +194,7 @@ struct BakeRun {
     // This run's proxies by key, finished or in the making: a node whose key another node is
     // baking waits for that proxy instead of baking a second copy.
     std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> bakedByKey;
-    std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0};
+    std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0}, damaged{0};
     tbb::task_group group;
     TextureMips mips; // source texture pyramids, shared by every node's atlas
 
@@ -206,9 +216,7 @@ struct BakeRun {
         NodeBake& nb = result.nodes[id];
         const double grid = offsetGrid(nb.errorBudget);
         ContentHash h(0x6e6f6465); // "node"
-        hashOptions(h, params);
-        h.addValue(nb.errorBudget);
-        h.addValue(static_cast<std::uint64_t>(inputs.size()));
+        hashNodeHead(h, params, nb.errorBudget, inputs.size());
         std::vector<AggregatePart> parts(inputs.size());
         std::vector<glm::dvec3> at(inputs.size());
         bool placed = false;
@@ -229,7 +237,8 @@ struct BakeRun {
         }
         for (std::size_t i = 0; i < inputs.size(); ++i) {
             const bool empty = parts[i].proxy == nullptr && parts[i].instance == kNoId;
-            parts[i].offset = quantizeOffset(empty ? glm::dvec3(0.0) : at[i] - nb.proxy.origin, grid);
+            parts[i].offset =
+                quantizeOffset(empty ? glm::dvec3(0.0) : at[i] - nb.proxy.origin, grid);
             h.addValue(result.nodes[inputs[i]].key);
             h.addValue(*parts[i].offset);
         }
@@ -237,9 +246,9 @@ struct BakeRun {
         return parts;
     }
 
-    // This run's earlier proxy with the same key, or the disk cache's.
     // This run's proxy with the same key (waiting while another node makes it), or the disk
-    // cache's; otherwise `owner` is set and the caller makes it and must fulfil it.
+    // cache's; otherwise `owner` is set and the caller makes it and must fulfil it. A damaged
+    // cache file counts as a miss (and is replaced by the store after the bake).
     std::optional<ProxyMesh> reuse(std::uint64_t key,
                                    std::shared_ptr<std::promise<ProxyMesh>>& owner) {
         std::shared_future<ProxyMesh> known;
@@ -254,7 +263,10 @@ struct BakeRun {
             }
         }
         if (known.valid()) return known.get(); // rethrows when the maker failed
-        return cache.load(key);
+        bool bad = false;
+        std::optional<ProxyMesh> found = cache.load(key, &bad);
+        if (bad) ++damaged;
+        return found;
     }
 
     // The economy's decision (ProxyBaker.h), once the proxy is known.
@@ -285,7 +297,13 @@ struct BakeRun {
         std::shared_ptr<std::promise<ProxyMesh>> owner;
         try {
             bool store = false;
-            if (std::optional<ProxyMesh> known = reuse(nb.key, owner)) {
+            std::optional<ProxyMesh> known = reuse(nb.key, owner);
+            ProxyCache::Claim claim; // held until the proxy is stored (ProxyCache.h)
+            if (!known && cache.enabled()) {
+                claim = cache.claim(nb.key, progress); // waits while another process bakes this key
+                known = cache.load(nb.key);
+            }
+            if (known) {
                 nb.proxy = std::move(*known);
                 nb.reused = true;
                 ++reused;
@@ -337,8 +355,10 @@ void validateParams(const BakeParams& params) {
 
 } // namespace
 
-BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
-                       const Progress& progress) {
+namespace {
+
+BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots,
+                    const BakeParams& params, const Progress& progress) {
     validateParams(params);
     const auto start = std::chrono::steady_clock::now();
     const int threads = params.threads > 0 ? params.threads : tbb::info::default_concurrency();
@@ -346,7 +366,7 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
 
     BakeResult result;
     result.nodes.resize(tree.nodes.size());
-    const std::vector<Id> order = postOrder(tree);
+    const std::vector<Id> order = postOrder(tree, roots);
     fillFrames(scene, tree, params, order, result.nodes);
     arena.execute([&] { leafKeys(scene, tree, order, params, result.nodes); });
     for (Id id : order) {
@@ -366,6 +386,8 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
         run.pending[id].store(inner);
         if (inner == 0) ready.push_back(id);
     }
+    // A subtree root's parent is outside `order`: its counter starts at 0 and only goes
+    // negative, so it is never spawned.
     progress.emit(ProgressInfo{"bake", 0, result.innerNodes, ""});
     arena.execute([&] {
         for (Id id : ready)
@@ -376,6 +398,7 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
     result.baked = run.baked.load();
     result.reused = run.reused.load();
     result.dissolved = run.dissolved.load();
+    result.damaged = run.damaged.load();
     for (Id id : order) {
         NodeBake& nb = result.nodes[id];
         if (tree.nodes[id].isLeaf()) continue;
@@ -390,6 +413,94 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+} // namespace
+
+BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                       const Progress& progress) {
+    std::vector<Id> roots;
+    if (tree.root != kNoId) roots.push_back(tree.root);
+    return bakeFrom(scene, tree, roots, params, progress);
+}
+
+BakeResult bakeSubtrees(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots,
+                        const BakeParams& params, const Progress& progress) {
+    std::vector<char> seen(tree.nodes.size(), 0);
+    for (Id r : roots) {
+        if (r >= tree.nodes.size() || tree.nodes[r].isLeaf() || seen[r]) {
+            throw Error(ErrorCode::InvalidArgument,
+                        "subtree root " + std::to_string(r) +
+                            " is not a distinct inner node of the tree");
+        }
+        seen[r] = 1;
+    }
+    for (Id r : roots) {
+        for (Id a = tree.nodes[r].parent; a != kNoId; a = tree.nodes[a].parent) {
+            if (seen[a]) {
+                throw Error(ErrorCode::InvalidArgument, "subtree root " + std::to_string(r) +
+                                                            " lies below subtree root " +
+                                                            std::to_string(a));
+            }
+        }
+    }
+    return bakeFrom(scene, tree, roots, params, progress);
+}
+
+std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree& tree,
+                                          const BakeParams& params) {
+    std::vector<Id> roots;
+    if (tree.root != kNoId) roots.push_back(tree.root);
+    const std::vector<Id> order = postOrder(tree, roots);
+    std::vector<NodeBake> nodes(tree.nodes.size());
+    fillFrames(scene, tree, params, order, nodes);
+    leafKeys(scene, tree, order, params, nodes);
+    // The position a node is placed by in its parent's frame: an instance's translation, an
+    // inner node's origin (its first placed input's position), as BakeRun::partsOf sets them.
+    std::vector<glm::dvec3> at(tree.nodes.size(), glm::dvec3(0.0));
+    std::vector<char> placed(tree.nodes.size(), 0);
+    for (Id id : order) {
+        const ClusterNode& node = tree.nodes[id];
+        if (node.isLeaf()) {
+            if (node.instance == kNoId) continue;
+            at[id] = glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
+            placed[id] = 1;
+            continue;
+        }
+        NodeBake& nb = nodes[id];
+        glm::dvec3 origin = nb.proxy.origin;
+        for (Id c : node.children) {
+            if (placed[c]) {
+                origin = at[c];
+                break;
+            }
+        }
+        const double grid = offsetGrid(nb.errorBudget);
+        ContentHash h(0x6e6f6465); // "node"
+        hashNodeHead(h, params, nb.errorBudget, node.children.size());
+        for (Id c : node.children) {
+            h.addValue(nodes[c].key);
+            h.addValue(quantizeOffset(placed[c] ? at[c] - origin : glm::dvec3(0.0), grid));
+        }
+        nb.key = h.digest();
+        at[id] = origin;
+        placed[id] = 1; // an inner input always has a proxy (and an origin) in partsOf
+    }
+    std::vector<std::uint64_t> keys(tree.nodes.size(), 0);
+    for (Id id : order)
+        keys[id] = nodes[id].key;
+    return keys;
+}
+
+std::uint64_t bakeParamsKey(const BakeParams& params) {
+    ContentHash h(0x7061726d); // "parm"
+    hashOptions(h, params);
+    h.addValue(params.screen.screenSize);
+    h.addValue(params.screen.pixelError);
+    h.addValue(params.screen.fovYDegrees);
+    h.addValue(params.screen.viewportHeight);
+    h.addValue(params.proxyRatio);
+    return h.digest();
 }
 
 } // namespace hlod

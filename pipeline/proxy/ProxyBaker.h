@@ -88,6 +88,7 @@ struct BakeResult {
     std::size_t baked = 0;
     std::size_t reused = 0;
     std::size_t dissolved = 0;      // inner nodes dissolved by the proxy economy
+    std::size_t damaged = 0;        // cache files found damaged (never trusted: baked again)
     std::size_t inputTriangles = 0; // sum over every baked node (the bake's work)
     std::size_t proxyTriangles = 0; // sum over the kept proxies
     std::size_t proxyVertices = 0;
@@ -98,6 +99,28 @@ struct BakeResult {
 // to tree.nodes (dissolved nodes keep no proxy). See ProxyEconomy.h for the tree without them.
 BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
                        const Progress& progress = {});
+
+// Only the subtrees under `roots` (distinct inner nodes, none below another): what one shard
+// of a distributed bake does (ShardPlan.h). Every node gets the key, proxy and economy decision
+// bakeProxies gives it on the whole tree (a node's bake only reads its own subtree), and the
+// proxies go to the cache folder as there. result.nodes is parallel to tree.nodes, filled for
+// the subtrees' nodes only (no compaction). The scene needs only the meshes and textures of
+// the subtrees' leaves (sliceScene): the others are never read.
+// Failure: as bakeProxies; Error(InvalidArgument) for a root that is a leaf, out of range, a
+// duplicate or below another root.
+BakeResult bakeSubtrees(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots,
+                        const BakeParams& params, const Progress& progress = {});
+
+// Per node (parallel to tree.nodes, 0 for nodes not under the root), the key bakeProxies gives
+// it when no node below it is dissolved. Equal keys mark subtrees that bake to the same proxies
+// (translated copies of a cluster): a shard plan keeps them in one shard, where only the first
+// is baked. Reads the meshes of every leaf.
+std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree& tree,
+                                          const BakeParams& params);
+
+// A hash of everything in `params` the proxies and the economy's decisions depend on (method,
+// tuning, screen parameters, rho, atlas options); not threads or the cache folder.
+std::uint64_t bakeParamsKey(const BakeParams& params);
 
 // One node's proxy from its already aggregated input (the per-node step of bakeProxies).
 // For `remesh` this is the smaller of the shell and the `decimate` proxy (both within the

@@ -1,8 +1,17 @@
 // Content-addressed proxy files with atomic replace (write temp + rename), see ProxyCache.h.
 #include "pipeline/proxy/ProxyCache.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
+#include <thread>
+#include <utility>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
@@ -151,13 +160,77 @@ std::filesystem::path ProxyCache::fileFor(std::uint64_t key) const {
     return folder_ / (toHex(key) + ".hlodproxy");
 }
 
-std::optional<ProxyMesh> ProxyCache::load(std::uint64_t key) const {
+std::optional<ProxyMesh> ProxyCache::load(std::uint64_t key, bool* damaged) const {
+    if (damaged) *damaged = false;
     if (!enabled()) return std::nullopt;
     std::ifstream in(fileFor(key), std::ios::binary);
     if (!in) return std::nullopt;
     std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                     std::istreambuf_iterator<char>());
-    return decodeProxy(key, bytes);
+    std::optional<ProxyMesh> mesh = decodeProxy(key, bytes);
+    if (!mesh && damaged) *damaged = true;
+    return mesh;
+}
+
+ProxyCache::Claim::Claim(Claim&& other) noexcept
+    : fd_(std::exchange(other.fd_, -1)), file_(std::move(other.file_)) {}
+
+ProxyCache::Claim& ProxyCache::Claim::operator=(Claim&& other) noexcept {
+    if (this != &other) {
+        release();
+        fd_ = std::exchange(other.fd_, -1);
+        file_ = std::move(other.file_);
+    }
+    return *this;
+}
+
+ProxyCache::Claim::~Claim() { release(); }
+
+void ProxyCache::Claim::release() noexcept {
+    if (fd_ < 0) return;
+    // Unlink while still holding the lock: a waiter that then gets the lock sees that its
+    // file is no longer the one at the path and starts over (claim() below).
+    ::unlink(file_.c_str());
+    ::close(fd_);
+    fd_ = -1;
+}
+
+ProxyCache::Claim ProxyCache::claim(std::uint64_t key, const Progress& progress) const {
+    Claim c;
+    if (!enabled()) return c;
+    std::error_code ec;
+    std::filesystem::create_directories(folder_, ec);
+    const std::filesystem::path file = folder_ / (toHex(key) + ".lock");
+    auto wait = std::chrono::milliseconds(5);
+    for (;;) {
+        const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd < 0) return c; // read-only folder: store() will say so
+        struct flock lock {};
+        lock.l_type = F_WRLCK;
+        lock.l_whence = SEEK_SET;
+        // Polled rather than blocking (F_SETLKW), so a cancel is seen while waiting.
+        while (::fcntl(fd, F_SETLK, &lock) != 0) {
+            if (errno != EACCES && errno != EAGAIN && errno != EINTR) {
+                ::close(fd); // ENOLCK and the like: no locks on this file system
+                return c;
+            }
+            if (progress.cancelled()) {
+                ::close(fd);
+                progress.throwIfCancelled();
+            }
+            std::this_thread::sleep_for(wait);
+            wait = std::min(wait * 2, std::chrono::milliseconds(200));
+        }
+        struct stat held {
+        }, current{};
+        if (::fstat(fd, &held) == 0 && ::stat(file.c_str(), &current) == 0 &&
+            held.st_dev == current.st_dev && held.st_ino == current.st_ino) {
+            c.fd_ = fd;
+            c.file_ = file;
+            return c;
+        }
+        ::close(fd); // the holder removed that file when it finished: take the new one
+    }
 }
 
 void ProxyCache::store(std::uint64_t key, const ProxyMesh& mesh) const {

@@ -23,7 +23,7 @@ TEST(CliHelp, NoArgumentsPrintsTheShortUsageOnStderr) {
     const auto r = runCli({});
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_TRUE(r.out.empty());
-    for (const char* line : {"hlod info", "hlod cluster", "hlod build", "hlod bench",
+    for (const char* line : {"hlod info", "hlod cluster", "hlod build", "hlod plan", "hlod bench",
                              "hlod help [COMMAND]", "hlod --version"})
         EXPECT_TRUE(contains(r.err, line)) << line << "\n" << r.err;
     // Short: the synopses and a pointer to the rest, not every flag.
@@ -50,7 +50,7 @@ TEST(CliHelp, BuildHelpListsEveryDeclaredFlagWithDefaultUnitAndRange) {
 }
 
 TEST(CliHelp, HelpCommandAndHelpFlagPrintTheSame) {
-    for (const char* command : {"info", "cluster", "build", "bench"}) {
+    for (const char* command : {"info", "cluster", "build", "plan", "bench"}) {
         const auto a = runCli({"help", command});
         const auto b = runCli({command, "--help"});
         const auto c = runCli({command, "-h"});

@@ -1,6 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <csignal>
 #include <fstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "TestUtil.h"
 #include "pipeline/proxy/ContentHash.h"
@@ -87,4 +92,78 @@ TEST(ContentHash, IsStableAcrossBuildsAndSensitiveToEveryByte) {
     EXPECT_NE(hashBytes("abc", 3), hashBytes("abc", 3, 1)); // seeded
     const std::uint8_t zeros[9] = {};
     EXPECT_NE(hashBytes(zeros, 8), hashBytes(zeros, 9)); // length counts
+}
+
+TEST(ProxyCache, DamagedFilesAreReportedAsSuch) {
+    test::TempDir dir;
+    const ProxyCache cache(dir.path());
+    bool damaged = true;
+    EXPECT_FALSE(cache.load(7, &damaged));
+    EXPECT_FALSE(damaged); // missing is not damaged
+    cache.store(7, triangle());
+    std::filesystem::resize_file(cache.fileFor(7), 20); // a half-written file
+    EXPECT_FALSE(cache.load(7, &damaged));
+    EXPECT_TRUE(damaged);
+}
+
+// Claims exclude other processes (the shards of a distributed bake): a child process holds the
+// claim on a key while it "bakes" and stores the proxy; the parent's claim on that key returns
+// only after the child let go, so the parent then finds the proxy instead of baking it again.
+// Claims end with their process: a key claimed by a process that died is free again.
+TEST(ProxyCache, AClaimMakesOtherProcessesWaitForTheProxy) {
+    test::TempDir dir;
+    const ProxyCache cache(dir.path());
+    int ready[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ProxyCache::Claim claim = cache.claim(99);
+        const char held = claim.held() ? 'y' : 'n';
+        (void)!::write(ready[1], &held, 1);
+        ::usleep(300 * 1000); // baking
+        cache.store(99, triangle());
+        ::_exit(0); // the claim's lock goes with the process
+    }
+    char held = 0;
+    ASSERT_EQ(::read(ready[0], &held, 1), 1);
+    ASSERT_EQ(held, 'y');
+    {
+        ProxyCache::Claim claim = cache.claim(99);
+        EXPECT_TRUE(claim.held());
+        EXPECT_TRUE(cache.load(99).has_value()); // stored by the child before it let go
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status));
+    ::close(ready[0]);
+    ::close(ready[1]);
+    // Released: no lock file is left behind (the dead child's was taken over and removed).
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "0000000000000063.lock"));
+}
+
+TEST(ProxyCache, AWaitingClaimHonoursCancel) {
+    test::TempDir dir;
+    const ProxyCache cache(dir.path());
+    int ready[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ProxyCache::Claim claim = cache.claim(5);
+        (void)!::write(ready[1], "y", 1);
+        ::usleep(2000 * 1000);
+        ::_exit(0);
+    }
+    char c = 0;
+    ASSERT_EQ(::read(ready[0], &c, 1), 1);
+    std::atomic<bool> cancel{true};
+    Progress progress;
+    progress.cancel = &cancel;
+    EXPECT_THROW(cache.claim(5, progress), Error);
+    ::kill(child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+    ::close(ready[0]);
+    ::close(ready[1]);
+    EXPECT_TRUE(cache.claim(5).held()); // the killed holder's lock is gone
 }

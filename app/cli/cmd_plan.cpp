@@ -1,0 +1,116 @@
+// `hlod plan SCENE... --shards N --cache DIR [import, cluster and bake flags] [--json]` and
+// `hlod plan PROJECT.hlodproj --shards N --cache DIR`: the first step of a distributed bake
+// (issue 21). Imports once, clusters, cuts the tree into N cost-balanced shards and writes the
+// plan into the shared cache folder (pipeline/graph/BakePlan.h): the tree, every shard's slice
+// of the scene and the bake parameters. Then `hlod build --shard I/N --cache DIR` on each
+// machine, and the final `hlod build SCENE... -o PKG --cache DIR` with the same flags.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "Commands.h"
+#include "DocumentInput.h"
+#include "ProgressBar.h"
+#include "pipeline/core/Error.h"
+#include "pipeline/graph/BakePlan.h"
+
+namespace hlod::cli {
+
+namespace {
+
+const std::vector<NodeKind> kPlanKinds{NodeKind::Import, NodeKind::Cluster, NodeKind::Bake};
+
+// The Bake node whose package the final build writes, and the Cluster node feeding it.
+std::pair<NodeId, NodeId> bakeChain(const PipelineGraph& graph) {
+    NodeId bake = kNoNode;
+    if (const NodeId exportNode = graph.firstOf(NodeKind::Export); exportNode != kNoNode)
+        bake = graph.upstreamOf(exportNode);
+    if (bake == kNoNode) bake = graph.firstOf(NodeKind::Bake);
+    const NodeId cluster = bake == kNoNode ? kNoNode : graph.upstreamOf(bake);
+    if (bake == kNoNode || cluster == kNoNode)
+        throw Error(ErrorCode::InvalidArgument, "the project has no Cluster -> Bake chain to plan");
+    return {bake, cluster};
+}
+
+void printPlan(const PlanSummary& s, const std::filesystem::path& cache, double clusterSeconds) {
+    const double total = s.shards.totalCost > 0.0 ? s.shards.totalCost : 1.0;
+    std::printf("plan:         %s (id %s): %d shards over %zu inner nodes (%zu nodes), "
+                "clustered in %.2f s, written in %.2f s\n",
+                s.folder.string().c_str(), s.id.c_str(), s.shards.shards, s.innerNodes, s.nodes,
+                clusterSeconds, s.seconds);
+    std::printf("cost:         estimated input triangles, each distinct proxy once: %.0f in all\n",
+                s.shards.totalCost);
+    for (int i = 0; i < s.shards.shards; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        std::printf("shard %-6d  %4zu subtrees, %6zu inner nodes, cost %12.0f (%5.1f%%), slice "
+                    "%zu meshes, %zu triangles, %.2f MB\n",
+                    i, s.shards.roots[k].size(), s.shardInnerNodes[k], s.shards.cost[k],
+                    100.0 * s.shards.cost[k] / total, s.shardMeshes[k], s.shardTriangles[k],
+                    static_cast<double>(s.shardBytes[k]) / 1e6);
+    }
+    std::printf("above cut:    %zu nodes baked by the final step, cost %.0f (%.1f%%)\n",
+                s.shards.top.size(), s.shards.topCost, 100.0 * s.shards.topCost / total);
+    std::printf("next:         hlod build --shard I/%d --cache %s   (I = 0..%d, or auto/%d in a "
+                "job array)\n"
+                "              hlod build SCENE... -o PKG --cache %s   (same flags as this plan)\n",
+                s.shards.shards, cache.string().c_str(), s.shards.shards - 1, s.shards.shards,
+                cache.string().c_str());
+}
+
+nlohmann::json planJson(const PlanSummary& s) {
+    nlohmann::json shards = nlohmann::json::array();
+    for (int i = 0; i < s.shards.shards; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        shards.push_back({{"index", i},
+                          {"subtrees", s.shards.roots[k].size()},
+                          {"inner_nodes", s.shardInnerNodes[k]},
+                          {"cost", s.shards.cost[k]},
+                          {"meshes", s.shardMeshes[k]},
+                          {"triangles", s.shardTriangles[k]},
+                          {"bytes", s.shardBytes[k]}});
+    }
+    return {{"plan", s.folder.string()},
+            {"id", s.id},
+            {"shards", s.shards.shards},
+            {"nodes", s.nodes},
+            {"inner_nodes", s.innerNodes},
+            {"cost", {{"total", s.shards.totalCost}, {"above_cut", s.shards.topCost}}},
+            {"above_cut_nodes", s.shards.top.size()},
+            {"shard_list", shards},
+            {"seconds", s.seconds}};
+}
+
+} // namespace
+
+int runPlan(const CommandArgs& argv) {
+    const Args args(argv, command("plan"));
+    const ParamFlags flags = paramsFromArgs(args, kPlanKinds); // usage errors before any work
+    if (!args.has("--shards")) throw Error(ErrorCode::InvalidArgument, "missing --shards N");
+    const int shards = args.integer("--shards", 1, 1, 100000);
+    Document doc = documentFromArgs(args.positionals(), flags);
+    PipelineGraph& graph = doc.graph();
+    const auto [bakeNode, clusterNode] = bakeChain(graph);
+    const ParamValues& bakeValues = graph.node(bakeNode).params;
+    if (!paramBool(bakeValues, "cache"))
+        throw Error(ErrorCode::InvalidArgument, "a plan needs the proxy cache (drop --no-cache)");
+    if (paramText(bakeValues, "cache_dir").empty())
+        throw Error(ErrorCode::InvalidArgument,
+                    "missing --cache DIR (the folder every shard and the final build share)");
+    const std::filesystem::path cache = paramText(bakeValues, "cache_dir");
+
+    ProgressBar bar;
+    graph.run({clusterNode}, bar.progress());
+    const NodeOutput& out = *graph.output(clusterNode);
+    const PlanSummary s =
+        writeBakePlan(cache, *out.scene, *out.tree, bakeValues, shards, bar.progress());
+    bar.finish();
+    if (args.has("--json")) {
+        std::cout << planJson(s).dump(2) << "\n";
+    } else {
+        printPlan(s, cache, out.clusterSeconds);
+    }
+    return 0;
+}
+
+} // namespace hlod::cli

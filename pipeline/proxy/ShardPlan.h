@@ -1,0 +1,52 @@
+// Cutting a cluster tree into the shards of a distributed bake (issue 21, DESIGN.md
+// "Distributed bake"). A shard bakes whole subtrees (bakeSubtrees, ProxyBaker.h) into the
+// shared cache; the final step bakes the nodes above the cut, finding everything below in the
+// cache (a proxy is a pure function of its subtree, so the package is the single machine's).
+//
+// Cost: a node's bake is estimated by its input triangles: its leaf children's triangles plus
+// rho (BakeParams::proxyRatio, the most a kept proxy holds of its inputs) times the estimated
+// input of each inner child. Translated copies of a cluster bake once (equal structuralKeys):
+// subtrees with equal root keys go to one shard, where the first is baked and the others
+// reused. A key shared deeper down (the same part under different subtrees) is baked once too:
+// the shards that need it share the work through the cache's claims (ProxyCache.h: one bakes,
+// the others wait and reuse), so each is charged its share of that key's cost.
+// Cut: greedy. Starting from the root as the only unit, one unit is split at a time (its inner
+// children become units, it moves above the cut): of the 8 costliest, the one that lowers the
+// estimated makespan most, the cost above the cut (the final step, serial) plus the largest
+// shard's; until no split lowers it. Units are
+// put into shards largest first, each into the least loaded shard (LPT), so the shards'
+// estimated costs are balanced, not their numbers of subtrees. A shard may get nothing when
+// there are fewer units than shards.
+// Determinism: a pure function of its inputs.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pipeline/cluster/ClusterTree.h"
+#include "pipeline/proxy/ProxyBaker.h"
+#include "pipeline/scene/Scene.h"
+
+namespace hlod {
+
+struct ShardPlan {
+    int shards = 0;
+    std::vector<std::vector<Id>> roots; // per shard: its subtree roots (inner nodes), ascending
+    std::vector<double> cost;           // per shard: estimated input triangles it bakes (its
+                                        // share of what it has in common with other shards)
+    std::vector<Id> top;                // inner nodes above the cut (the final step's), ascending
+    double topCost = 0.0;               // their estimated input triangles
+    double totalCost = 0.0;             // every distinct node's (the single machine's work)
+};
+
+// Throws Error(InvalidArgument) unless 1 <= shards <= 100000.
+ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                     int shards);
+
+// What the bake of the subtrees under `roots` reads of `scene`: the meshes of their leaves
+// (every other mesh emptied: no vertices, no indices) and the textures of those meshes'
+// materials (every other texture without its image). Nodes, materials and instances are kept,
+// so every id is unchanged and the bake's keys are those of the whole scene.
+Scene sliceScene(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots);
+
+} // namespace hlod
