@@ -1,6 +1,10 @@
 # Warnings on for our own targets (not for third-party headers, included as SYSTEM).
 function(hlod_set_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local
+  # -Wshadow=local is GCC's; clang (the fuzz build) has no such option.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    set(shadow -Wshadow=local)
+  endif()
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic ${shadow}
                                            -Wnon-virtual-dtor -Wno-missing-field-initializers)
   # GCC notes that four-double vectors are returned differently with and without AVX
   # (-Wpsabi); the clustering's vector helpers (pipeline/cluster/WideBounds.h) are always

@@ -13,6 +13,7 @@ PACKAGES=(
   libocct-foundation-dev libocct-ocaf-dev libocct-visualization-dev
   libopenvdb-dev libboost-iostreams-dev libtbb-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang-14 libfuzzer-14-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
   chromium
 )

@@ -64,6 +64,7 @@ nlohmann::json toJson(const LoadedScene& loaded) {
         textures.push_back(std::move(tj));
     }
     j["textures"] = std::move(textures);
+    j["import_notes"] = s.importNotes;
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
         const DiskFootprint disk = filesFootprint({p.dir});
@@ -102,6 +103,9 @@ void printText(const LoadedScene& loaded) {
                 b.min.z, b.max.x, b.max.y, b.max.z);
     const glm::dvec3 e = b.extent();
     std::printf("size:       %.3f x %.3f x %.3f m\n", e.x, e.y, e.z);
+    // What the importers changed on the way in (a CAD face coarsened by the triangle budget).
+    for (const std::string& note : s.importNotes)
+        std::printf("note:       %s\n", note.c_str());
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
         std::printf("package:    %zu tree nodes (%zu leaves, height %d, %s), %zu proxy triangles\n",

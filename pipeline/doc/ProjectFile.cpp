@@ -60,8 +60,20 @@ Document readProject(const fs::path& file, const fs::path& anchor) {
     } catch (const nlohmann::json::parse_error& e) {
         throw Error(ErrorCode::Malformed, file,
                     "not valid JSON (byte " + std::to_string(e.byte) + ")");
+    } catch (const nlohmann::json::exception& e) {
+        // A number out of double's range ("-1e3082") is out_of_range, not parse_error (found
+        // by fuzz_project).
+        throw Error(ErrorCode::Malformed, file, std::string("not valid JSON: ") + e.what());
     }
-    return projectFromJson(j, anchor.empty() ? file : anchor);
+    try {
+        return projectFromJson(j, anchor.empty() ? file : anchor);
+    } catch (const Error& e) {
+        // Errors from the graph's and parameters' own readers may name no file.
+        if (!e.file().empty()) throw;
+        throw Error(e.code(), file, e.problem());
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(ErrorCode::Malformed, file, std::string("bad project: ") + e.what());
+    }
 }
 
 } // namespace

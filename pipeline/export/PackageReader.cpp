@@ -3,6 +3,7 @@
 // exists. Format 2 (PackageManifest.h) and the older format 1 (one GLB per node, "content" per
 // node) are both read.
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -45,11 +46,28 @@ void checkContentPath(const fs::path& dir, const fs::path& manifest, const std::
     }
 }
 
+// A non-negative integer that fits T. nlohmann's get<integer>() casts floats and negative
+// numbers as they are (1e300 to unsigned is undefined behaviour, -1 a huge id; found by
+// fuzz_package), so ids, counts and indices are read through this. Throws std::out_of_range
+// (readPackage turns it into Error naming hlod.json).
+template <typename T> T whole(const nlohmann::json& j) {
+    if (j.is_number_unsigned()) {
+        const auto v = j.get<std::uint64_t>();
+        if (v <= std::numeric_limits<T>::max()) return static_cast<T>(v);
+    } else if (j.is_number_integer()) {
+        const auto v = j.get<std::int64_t>();
+        if (v >= 0 && static_cast<std::uint64_t>(v) <= std::numeric_limits<T>::max())
+            return static_cast<T>(v);
+    }
+    throw std::out_of_range("expected a non-negative integer, got " + j.dump());
+}
+
 ClusterNode readNode(const nlohmann::json& j, std::size_t count) {
     ClusterNode n;
-    n.parent = j.at("parent").is_null() ? kNoId : j.at("parent").get<Id>();
-    n.children = j.at("children").get<std::vector<Id>>();
-    n.level = j.value("level", 0);
+    n.parent = j.at("parent").is_null() ? kNoId : whole<Id>(j.at("parent"));
+    for (const auto& c : j.at("children"))
+        n.children.push_back(whole<Id>(c));
+    n.level = j.contains("level") ? whole<int>(j.at("level")) : 0;
     if (j.contains("box")) {
         n.box.min = vec3(j.at("box").at("min"));
         n.box.max = vec3(j.at("box").at("max"));
@@ -58,7 +76,7 @@ ClusterNode readNode(const nlohmann::json& j, std::size_t count) {
         n.sphere.center = vec3(j.at("sphere").at("center"));
         n.sphere.radius = j.at("sphere").at("radius").get<double>();
     }
-    if (j.contains("instance")) n.instance = j.at("instance").get<Id>();
+    if (j.contains("instance")) n.instance = whole<Id>(j.at("instance"));
     if ((n.parent != kNoId && n.parent >= count)) throw std::out_of_range("parent id");
     for (Id c : n.children) {
         if (c >= count) throw std::out_of_range("child id");
@@ -66,22 +84,49 @@ ClusterNode readNode(const nlohmann::json& j, std::size_t count) {
     return n;
 }
 
+// Structure only (bounds are the writer's business): the root has no parent, every child link
+// agrees with the child's parent, no node has two parents and every node hangs under the root,
+// so walks over the tree (height, leaves) end. Throws std::out_of_range.
+void checkStructure(const ClusterTree& t) {
+    const std::size_t n = t.nodes.size();
+    if (t.nodes[t.root].parent != kNoId) throw std::out_of_range("the root has a parent");
+    std::vector<char> linked(n, 0);
+    for (Id i = 0; i < n; ++i) {
+        for (Id c : t.nodes[i].children) {
+            if (c == t.root || t.nodes[c].parent != i || linked[c]++ != 0)
+                throw std::out_of_range("parent and child links disagree at node " +
+                                        std::to_string(c));
+        }
+    }
+    std::vector<Id> stack{t.root};
+    std::size_t reached = 0;
+    while (!stack.empty()) {
+        const Id id = stack.back();
+        stack.pop_back();
+        ++reached;
+        for (Id c : t.nodes[id].children)
+            stack.push_back(c);
+    }
+    if (reached != n) throw std::out_of_range("some nodes are not under the root");
+}
+
 // The file of node `j` in a format-2 manifest ("" when it has none).
 std::string contentOf(const nlohmann::json& m, const nlohmann::json& j) {
     if (!j.contains("tile")) return {};
-    const nlohmann::json& tile = m.at("tiles").at(j.at("tile").get<std::size_t>());
-    const int file = tile.at("file").get<int>();
-    if (file < 0) return {};
+    const nlohmann::json& tile = m.at("tiles").at(whole<std::size_t>(j.at("tile")));
+    const nlohmann::json& fileIndex = tile.at("file");
+    if (fileIndex.is_number_integer() && fileIndex.get<std::int64_t>() < 0) return {};
+    const auto file = whole<std::size_t>(fileIndex);
     const bool leaf = j.at("children").empty();
     if (!leaf && !tile.at("node").is_number()) return {}; // a node shown by no tile of its own
-    return m.at("files").at(static_cast<std::size_t>(file)).get<std::string>();
+    return m.at("files").at(file).get<std::string>();
 }
 
 void readTree(PackageInfo& info) {
     const nlohmann::json& m = info.manifest;
     const auto& nodes = m.at("nodes");
     const bool v2 = m.value("formatVersion", 1) >= 2;
-    info.tree.root = m.at("root").get<Id>();
+    info.tree.root = whole<Id>(m.at("root"));
     info.tree.volume = volumeTypeFromString(m.at("volume").get<std::string>());
     info.tree.k = m.value("k", 0.0);
     for (const auto& j : nodes) {
@@ -90,15 +135,14 @@ void readTree(PackageInfo& info) {
         const bool leaf = info.tree.nodes.back().isLeaf();
         std::size_t tris = 0;
         if (v2 && leaf)
-            tris = m.at("meshes")
-                       .at(j.at("mesh").get<std::size_t>())
-                       .at("triangles")
-                       .get<std::size_t>();
+            tris = whole<std::size_t>(
+                m.at("meshes").at(whole<std::size_t>(j.at("mesh"))).at("triangles"));
         else
-            tris = j.at("triangles").get<std::size_t>();
+            tris = whole<std::size_t>(j.at("triangles"));
         (leaf ? info.leafTriangles : info.proxyTriangles) += tris;
     }
     if (info.tree.root >= info.tree.nodes.size()) throw std::out_of_range("root id");
+    checkStructure(info.tree);
 }
 
 } // namespace
@@ -109,22 +153,40 @@ bool isPackageFolder(const fs::path& dir) {
            fs::is_regular_file(dir / "tileset.json", ec);
 }
 
+// The string under `key`, or "" when `j` is no object or the value no string (json::value
+// throws on both, and a mutated manifest must be refused with a message naming the file; found
+// by fuzz_package).
+namespace {
+
+std::string textOf(const nlohmann::json& j, const char* key) {
+    if (!j.is_object()) return {};
+    const auto it = j.find(key);
+    return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+} // namespace
+
 PackageInfo readPackage(const fs::path& dirIn) {
     PackageInfo info;
     info.dir = fs::absolute(dirIn).lexically_normal();
     const fs::path manifestFile = info.dir / "hlod.json";
     info.manifest = readJson(manifestFile);
     const nlohmann::json tileset = readJson(info.dir / "tileset.json");
-    if (info.manifest.value("format", "") != "hlod-studio-package") {
+    if (textOf(info.manifest, "format") != "hlod-studio-package") {
         throw Error(ErrorCode::Malformed, manifestFile, "not an HLOD Studio package manifest");
     }
-    if (tileset.value("asset", nlohmann::json::object()).value("version", "") != "1.1") {
+    const nlohmann::json none;
+    const nlohmann::json& asset =
+        tileset.is_object() && tileset.contains("asset") ? tileset["asset"] : none;
+    if (textOf(asset, "version") != "1.1") {
         throw Error(ErrorCode::Malformed, info.dir / "tileset.json", "not a 3D Tiles 1.1 tileset");
     }
     try {
         readTree(info);
-    } catch (const Error&) {
-        throw;
+    } catch (const Error& e) {
+        // e.g. volumeTypeFromString's InvalidArgument, which names no file.
+        if (!e.file().empty()) throw;
+        throw Error(ErrorCode::Malformed, manifestFile, "bad tree: " + e.problem());
     } catch (const std::exception& e) {
         throw Error(ErrorCode::Malformed, manifestFile, std::string("bad tree: ") + e.what());
     }
@@ -151,8 +213,8 @@ Id outputMaterial(LoadedFile& f, Id material, Scene& out) {
 
 // Vertices [first, first + count) and indices [firstIndex, firstIndex + indexCount) of `m`.
 Mesh sliceMesh(const Mesh& m, const nlohmann::json& range, const fs::path& manifest) {
-    const auto fv = range.at(0).get<std::size_t>(), nv = range.at(1).get<std::size_t>();
-    const auto fi = range.at(2).get<std::size_t>(), ni = range.at(3).get<std::size_t>();
+    const auto fv = whole<std::size_t>(range.at(0)), nv = whole<std::size_t>(range.at(1));
+    const auto fi = whole<std::size_t>(range.at(2)), ni = whole<std::size_t>(range.at(3));
     if (fv > m.vertexCount() || nv > m.vertexCount() - fv || fi > m.indices.size() ||
         ni > m.indices.size() - fi || ni % 3 != 0)
         throw Error(ErrorCode::Malformed, manifest, "a contentRange lies outside its primitive");
@@ -203,10 +265,10 @@ Scene readScene2(const PackageInfo& info) {
             f->scene = importGltf(info.dir / info.content[i], ImportOptions{});
         }
         // Our files are flat: glTF node k is the importer's node k + 1 (0 is its root).
-        const Id gltfNode = j.at("contentNode").get<Id>() + 1;
+        const Id gltfNode = whole<Id>(j.at("contentNode")) + 1;
         if (gltfNode >= f->scene.nodes.size())
             throw Error(ErrorCode::Malformed, manifest, "a contentNode does not exist");
-        const glm::dmat4 world = tileFrame(m.at("tiles").at(j.at("tile").get<std::size_t>())) *
+        const glm::dmat4 world = tileFrame(m.at("tiles").at(whole<std::size_t>(j.at("tile")))) *
                                  f->scene.nodes[gltfNode].world;
         const Id node = out.addNode(j.value("name", "leaf " + std::to_string(i)), 0, world);
         for (const MeshInstance& inst : f->scene.instances) {

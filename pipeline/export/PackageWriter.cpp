@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
@@ -66,20 +67,18 @@ public:
         : tmp_(std::move(tmp)), old_(std::move(old)), s_(s) {}
     void add(const std::string& rel, std::span<const std::uint8_t> bytes) override {
         const fs::path target = tmp_ / rel;
-        fs::create_directories(target.parent_path());
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) throw Error(ErrorCode::Io, target.parent_path(), "cannot create: " + ec.message());
         if (!old_.empty() && sameBytes(old_ / rel, bytes)) {
-            std::error_code ec;
             fs::create_hard_link(old_ / rel, target, ec);
             if (!ec) {
                 ++s_.reused;
                 return;
             }
         }
-        std::ofstream out(target, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) throw Error(ErrorCode::Io, target, "cannot write the file");
+        writeFileBytes(target, std::string_view(reinterpret_cast<const char*>(bytes.data()),
+                                                bytes.size()));
         ++s_.written;
     }
 
@@ -162,13 +161,33 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
         throw Error(ErrorCode::Io, dir, "exists and is not a folder");
     }
     fs::create_directories(dir.parent_path(), ec);
+    // A read-only folder (or file system) is refused before any work, and named as such.
+    if (fs::exists(dir, ec) && ::access(dir.c_str(), W_OK) != 0) {
+        throw Error(ErrorCode::Io, dir, "cannot write the package: " + systemReason(errno));
+    }
     const fs::path tmp = siblingTemp(dir, ".tmp-");
     PackageSummary summary;
     try {
-        fs::create_directories(tmp);
+        if (!fs::create_directories(tmp, ec) || ec) {
+            throw Error(ErrorCode::Io, dir.parent_path(),
+                        "cannot create the package's temporary folder: " + ec.message());
+        }
         FolderSink sink(tmp, isPackageFolder(dir) ? dir : fs::path(), summary);
         summary.tiles = assemble(scene, tree, bake, bakeParams, options, sink, progress);
         commitFolder(tmp, dir);
+    } catch (const Error& e) {
+        fs::remove_all(tmp, ec);
+        if (e.code() != ErrorCode::Io) throw;
+        // One line naming the package (not our temporary folder) and what the system said.
+        const std::string inside = e.file().lexically_relative(tmp).generic_string();
+        const bool ownFile = !inside.empty() && inside.rfind("..", 0) != 0;
+        std::string problem = e.problem();
+        if (ownFile && problem.rfind("cannot write: ", 0) == 0) {
+            problem = "cannot write " + inside + ": " + problem.substr(14);
+        }
+        throw Error(ErrorCode::Io, dir,
+                    problem +
+                        (fs::exists(dir, ec) ? " (the previous package is unchanged)" : ""));
     } catch (...) {
         fs::remove_all(tmp, ec);
         throw;

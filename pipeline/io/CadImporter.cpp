@@ -250,9 +250,13 @@ Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOpt
         throw Error(ErrorCode::NoGeometry, file, "the shape's faces have no finite extent");
     }
     cad::clearTriangulation(shape);
-    cad::tessellate(shape, options.cadRelativeDeflection * diagonal, options.cadAngularDeflection);
-    Scene scene;
     const double scale = options.cadBrepUnitMetres;
+    const double deflection = options.cadRelativeDeflection * diagonal;
+    cad::TessellationBudget budget =
+        cad::makeBudget(file, diagonal, deflection, options.cadAngularDeflection);
+    cad::tessellate(shape, deflection, options.cadAngularDeflection, &budget, scale);
+    Scene scene;
+    scene.importNotes = std::move(budget.notes);
     const std::string stem = file.stem().string();
     std::map<std::pair<const void*, int>, Id> shared;
     std::size_t triangles = 0;

@@ -133,8 +133,10 @@ void clearTriangulation(const TopoDS_Shape& shape) {
     }
 }
 
-bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection) {
+bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection,
+                TessellationBudget* budget, double unitScale) {
     try {
+        if (budget != nullptr) meshDenseFaces(shape, *budget, unitScale);
         // On the calling thread, not BRepMesh's parallel mode: a fault inside OCCT can only be
         // turned into an error on the thread that runs the guarded call (CadCrashGuard.h).
         BRepMesh_IncrementalMesh mesher(shape, linearDeflection, false, angularDeflection, false);

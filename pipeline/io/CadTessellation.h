@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/io/CadBudget.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::cad {
@@ -42,8 +43,11 @@ double modelDiagonal(const TopoDS_Shape& shape);
 void clearTriangulation(const TopoDS_Shape& shape);
 
 // Tessellates every face of `shape` that has no triangulation yet, with an absolute linear
-// deflection (file units) and an angular deflection (radians). Returns false when OCCT threw.
-bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection);
+// deflection (file units) and an angular deflection (radians). With a `budget`, faces that
+// would exceed it are meshed first within it (CadBudget.h; `unitScale` is metres per file
+// unit, for its notes). Returns false when OCCT threw.
+bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection,
+                TessellationBudget* budget = nullptr, double unitScale = 1.0);
 
 // A triangle mesh for one colour of a shape; `colour` is empty when neither the faces nor
 // the caller gave one (the default material applies).

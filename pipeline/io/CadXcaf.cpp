@@ -90,6 +90,7 @@ private:
     std::filesystem::path file_;
     Scene scene_;
     double linearDeflection_ = 0.0;
+    TessellationBudget budget_;
     std::set<std::string> tessellated_;
     std::map<PartKey, std::vector<Id>> partMeshes_;
     std::map<std::array<float, 4>, Id> materials_;
@@ -114,6 +115,7 @@ Scene XcafSceneBuilder::build() {
         throw Error(ErrorCode::NoGeometry, file_, "the model's faces have no finite extent");
     }
     linearDeflection_ = options_.cadRelativeDeflection * diagonal;
+    budget_ = makeBudget(file_, diagonal, linearDeflection_, options_.cadAngularDeflection);
     const std::string stem = file_.stem().string();
     for (int i = 1; i <= free.Length(); ++i) {
         const TDF_Label& label = free.Value(i);
@@ -127,6 +129,7 @@ Scene XcafSceneBuilder::build() {
         throw Error(ErrorCode::NoGeometry, file_, "no face could be tessellated");
     }
     scene_.updateWorldTransforms();
+    scene_.importNotes = std::move(budget_.notes);
     return std::move(scene_);
 }
 
@@ -184,7 +187,7 @@ const std::vector<Id>& XcafSceneBuilder::partMeshes(const TDF_Label& part,
     if (auto it = partMeshes_.find(key); it != partMeshes_.end()) return it->second;
     const TopoDS_Shape shape = shapes_->GetShape(part);
     if (tessellated_.insert(entry).second)
-        tessellate(shape, linearDeflection_, options_.cadAngularDeflection);
+        tessellate(shape, linearDeflection_, options_.cadAngularDeflection, &budget_, unitScale_);
     const FaceColourMap faces = faceColours(part);
     std::vector<ColouredMesh> groups = extractMeshes(shape, unitScale_, colour, &faces);
     std::string name = labelName(part);

@@ -32,10 +32,27 @@ bool writeAll(int fd, const char* data, std::size_t size) {
 }
 
 // Child side: 'S' + scene bytes, or 'E' + code byte + message.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 [[noreturn]] void childMain(int fd, const std::function<Scene()>& import,
                             const IsolationLimits& limits) {
-    rlimit lim{limits.memoryLimitBytes, limits.memoryLimitBytes};
-    setrlimit(RLIMIT_AS, &lim);
+    // AddressSanitizer reserves terabytes of shadow address space up front, so under it (the
+    // sanitized build, scripts/sanitize.sh) an address-space limit fails every allocation;
+    // there the sanitizer's own allocator limits (ASAN_OPTIONS) take its place.
+    if (!kAddressSanitizer) {
+        rlimit lim{limits.memoryLimitBytes, limits.memoryLimitBytes};
+        setrlimit(RLIMIT_AS, &lim);
+    }
     // Some readers print diagnostics themselves; the pipeline never prints.
     const int devnull = ::open("/dev/null", O_WRONLY);
     if (devnull >= 0) {

@@ -75,6 +75,13 @@ bool readAtlas(Reader& r, ProxyMesh& m, std::uint64_t vertices) {
         return false;
     atlas->mask = mask != 0;
     atlas->mimeType.assign(mime.begin(), mime.end());
+    // Our bakes store PNG or JPEG only; anything else is not an entry of ours (and would reach
+    // decoders a cache never needs: fuzz_proxy_cache found a PNM header overflowing in stb).
+    const auto& e = atlas->encoded;
+    const bool png = e.size() >= 8 && e[0] == 0x89 && e[1] == 'P' && e[2] == 'N' && e[3] == 'G';
+    const bool jpeg = e.size() >= 3 && e[0] == 0xFF && e[1] == 0xD8 && e[2] == 0xFF;
+    if (!(png && atlas->mimeType == "image/png") && !(jpeg && atlas->mimeType == "image/jpeg"))
+        return false;
     std::string why;
     auto image = decodeImage(atlas->encoded, why);
     if (!image) return false;

@@ -176,19 +176,41 @@ private:
         return {vertexTris_.data() + offsets_[v], offsets_[v + 1] - offsets_[v]};
     }
 
+    // Half-edges sorted by (lo, hi, tri): bucketed by lo (counting sort, in triangle order),
+    // then each bucket sorted by (hi, tri). Equal keys come only from one degenerate triangle
+    // (identical entries but for `forward`), which every use treats alike.
     void buildEdges() {
-        edges_.clear();
-        edges_.reserve(tris_.size());
-        for (std::size_t t = 0; t < tris_.size() / 3; ++t) {
+        edgeStart_.assign(pos_.size() + 1, 0);
+        const std::size_t triangles = tris_.size() / 3;
+        for (std::size_t t = 0; t < triangles; ++t) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t a = tris_[3 * t + k], b = tris_[3 * t + (k + 1) % 3];
-                edges_.push_back(HalfEdge{std::min(a, b), std::max(a, b),
-                                          static_cast<std::uint32_t>(t), a < b});
+                ++edgeStart_[std::min(a, b) + 1];
             }
         }
-        std::sort(edges_.begin(), edges_.end(), [](const HalfEdge& x, const HalfEdge& y) {
-            return std::tie(x.lo, x.hi, x.tri) < std::tie(y.lo, y.hi, y.tri);
-        });
+        for (std::size_t i = 1; i < edgeStart_.size(); ++i)
+            edgeStart_[i] += edgeStart_[i - 1];
+        edges_.resize(3 * triangles);
+        fill_.assign(edgeStart_.begin(), edgeStart_.end() - 1);
+        for (std::size_t t = 0; t < triangles; ++t) {
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t a = tris_[3 * t + k], b = tris_[3 * t + (k + 1) % 3];
+                edges_[fill_[std::min(a, b)]++] = HalfEdge{std::min(a, b), std::max(a, b),
+                                                           static_cast<std::uint32_t>(t), a < b};
+            }
+        }
+        for (std::size_t v = 0; v + 1 < edgeStart_.size(); ++v) {
+            const auto first = edges_.begin() + edgeStart_[v], last = edges_.begin() + edgeStart_[v + 1];
+            if (last - first < 2) continue;
+            // Insertion sort: buckets are a vertex's edges, a handful.
+            for (auto i = first + 1; i < last; ++i) {
+                const HalfEdge e = *i;
+                auto j = i;
+                for (; j > first && std::tie(e.hi, e.tri) < std::tie((j - 1)->hi, (j - 1)->tri); --j)
+                    *j = *(j - 1);
+                *j = e;
+            }
+        }
     }
 
     // Whether the edge group edges_[first, last) is a feature (see the header).
@@ -236,7 +258,8 @@ private:
 
     void classify() {
         featureEdges_.assign(pos_.size(), 0);
-        forEachEdge([&](std::size_t first, std::size_t last) {
+        // Bounded mode tells only locked vertices from the others (mayMove).
+        if (!bounded_) forEachEdge([&](std::size_t first, std::size_t last) {
             if (!isFeature(first, last)) return;
             for (std::uint32_t v : {edges_[first].lo, edges_[first].hi})
                 featureEdges_[v] = static_cast<std::uint8_t>(std::min(featureEdges_[v] + 1, 255));
@@ -303,7 +326,9 @@ private:
         std::vector<Candidate> candidates;
         forEachEdge([&](std::size_t first, std::size_t last) {
             Candidate c;
-            if (bestCollapse(edges_[first].lo, edges_[first].hi, isFeature(first, last), limit, c))
+            // Bounded mode does not look at features (mayMove).
+            const bool feature = !bounded_ && isFeature(first, last);
+            if (bestCollapse(edges_[first].lo, edges_[first].hi, feature, limit, c))
                 candidates.push_back(c);
         });
         std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
@@ -318,8 +343,10 @@ private:
         for (const Candidate& c : candidates) {
             if (c.cost > goal && done * 12 > candidates.size()) break;
             if (touched_[c.from] || touched_[c.to]) continue;
-            if (!linkConditionHolds(c.from, c.to) || flipsAFace(c)) continue;
+            // The tests are pure until staysWithinLimit (its queries carry state, the surface's
+            // hint): the cheapest first.
             if (bounded_ && failedBefore(c)) continue;
+            if (!linkConditionHolds(c.from, c.to) || flipsAFace(c)) continue;
             if (bounded_ && !staysWithinLimit(c)) {
                 failed_[key(c)] = pass_;
                 continue;
@@ -508,31 +535,53 @@ private:
             ringSlot_.push_back(t);
         });
 
-        moves_.clear();
+        // Each sample goes to the first reshaped face (in ring order) it lies within the limit
+        // of: run face by face over the samples still unplaced, four at a time.
+        pending_.clear();
         for (std::uint32_t end : {c.from, c.to}) {
             for (std::uint32_t t : trianglesOf(end)) {
                 const std::uint32_t* k = &tris_[3 * t];
                 if (k[0] == kDead) continue;
                 // A face of c.to that holds c.from too was seen from c.from.
                 if (end == c.to && (k[0] == c.from || k[1] == c.from || k[2] == c.from)) continue;
-                for (std::uint32_t sample : owned_[t]) {
-                    std::size_t i = 0;
-                    while (i < ring_.size() && !surface::within(ring_[i], samples_[sample], limit2_))
-                        ++i;
-                    if (i == ring_.size()) return false;
-                    moves_.emplace_back(sample, ringSlot_[i]);
-                }
+                pending_.insert(pending_.end(), owned_[t].begin(), owned_[t].end());
             }
         }
+        placedIn_.assign(pending_.size(), 0);
+        unplaced_.resize(pending_.size());
+        for (std::uint32_t j = 0; j < pending_.size(); ++j)
+            unplaced_[j] = j;
+        for (std::uint32_t i = 0; i < ring_.size() && !unplaced_.empty(); ++i) {
+            std::size_t kept = 0;
+            for (std::size_t j = 0; j < unplaced_.size(); j += 4) {
+                const std::size_t n = std::min<std::size_t>(4, unplaced_.size() - j);
+                surface::Points4 block;
+                for (std::size_t k = 0; k < 4; ++k) {
+                    const glm::vec3& q = samples_[pending_[unplaced_[j + std::min(k, n - 1)]]];
+                    block.x[k] = q.x, block.y[k] = q.y, block.z[k] = q.z;
+                }
+                const unsigned inside = surface::withinMask4(ring_[i], block, limit2_);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const std::uint32_t u = unplaced_[j + k];
+                    if (inside & (1u << k))
+                        placedIn_[u] = i;
+                    else
+                        unplaced_[kept++] = u;
+                }
+            }
+            unplaced_.resize(kept);
+        }
+        if (!unplaced_.empty()) return false;
+        moves_.clear();
+        for (std::size_t j = 0; j < pending_.size(); ++j)
+            moves_.emplace_back(pending_[j], ringSlot_[placedIn_[j]]);
         // The reshaped faces within the limit of the input: sampled here (corners, edge
         // midpoints, centroid: quick, and most failing collapses fail above), certified by the
         // caller's final check (BoundedSimplify.h).
-        bool near = true;
         for (const surface::Triangle& tri : ring_) {
-            forEachSample(tri.a, tri.b, tri.c, [&](const glm::vec3& point) {
-                near = near && original_.near(point);
-            });
-            if (!near) return false;
+            points_.clear();
+            forEachSample(tri.a, tri.b, tri.c, [&](const glm::vec3& point) { points_.push_back(point); });
+            if (!original_.nearEach(points_)) return false;
         }
         // Then certified (SurfaceQuery.h Coverage), so that the caller's check rarely fails.
         // Then certified (SurfaceQuery.h Coverage): every face the result holds was either left
@@ -549,7 +598,7 @@ private:
     std::vector<std::uint32_t> tris_;
     std::vector<Quadric> quadrics_;
     std::vector<std::uint32_t> rep_;
-    std::vector<std::uint32_t> offsets_, vertexTris_, fill_;
+    std::vector<std::uint32_t> offsets_, vertexTris_, fill_, edgeStart_;
     std::vector<HalfEdge> edges_;
     std::vector<std::uint8_t> featureEdges_, touched_;
     std::vector<Kind> kinds_;
@@ -564,6 +613,8 @@ private:
     std::vector<surface::Triangle> ring_;
     std::vector<std::uint32_t> ringSlot_;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> moves_; // (sample, slot)
+    std::vector<std::uint32_t> pending_, placedIn_, unplaced_;   // scratch of staysWithinLimit
+    std::vector<glm::vec3> points_;
     int pass_ = 0;
     std::vector<int> changed_;                      // per vertex: pass of its last change
     std::unordered_map<std::uint64_t, int> failed_; // collapse -> pass it failed in

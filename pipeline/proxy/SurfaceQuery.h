@@ -7,6 +7,12 @@
 // Coverage certifies a whole triangle lies within the limit of the surface: by convexity of
 // the distance to one triangle (three corners within the limit of the same triangle), by the
 // 1-Lipschitz distance (within d(centroid) + circumradius), else by bisecting its longest edge.
+// Speed without changing an answer: the grid keeps each filed triangle's plane by component,
+// so a query rejects four candidates per step, and withinMask4 tests four points against one
+// triangle; both run the scalar tests' float operations in the same order (SSE2, no
+// contraction), so they answer bit for bit as within() does, and every query returns the
+// same triangle it would one at a time (the hint NearSurface carries between queries steers
+// later answers, so the order of queries and their answers is part of the result).
 #pragma once
 
 #include <algorithm>
@@ -18,10 +24,14 @@
 
 #include <glm/glm.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace hlod::surface {
 
 
-[[gnu::noinline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
+[[gnu::always_inline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
                                         const glm::vec3& c) {
     const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
     const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
@@ -88,16 +98,116 @@ inline Triangle makeTriangle(const glm::vec3& a, const glm::vec3& b, const glm::
 // Whether `tri` lies within sqrt(limit2) of p. Most candidates are rejected by one of their
 // planes (distance s / |n| beyond the limit, compared squared to avoid square roots); the
 // 1e-4 slack leaves points near the limit to the exact test, so the answer is the exact one.
-// Inlined into the query loops: most calls end at a plane test.
-[[gnu::always_inline]] inline bool within(const Triangle& tri, const glm::vec3& p, float limit2) {
-    const float reach2 = limit2 * 1.0002f;
-    const float s = glm::dot(tri.plane.n, p) - tri.plane.offset;
-    if (s * s > reach2 * tri.plane.n2) return false;
+// Inlined into the query loops: most calls end at a plane test. The grid keeps each filed
+// triangle's plane next to its number (TriangleGrid), so a query runs the first test
+// (rejectedByPlane) on what it reads in order and reads the triangle only when that passes
+// (withinPastPlane); the two together are within().
+inline float reachSquared(float limit2) { return limit2 * 1.0002f; }
+
+[[gnu::always_inline]] inline bool rejectedByPlane(const Plane& plane, const glm::vec3& p,
+                                                   float reach2) {
+    const float s = glm::dot(plane.n, p) - plane.offset;
+    return s * s > reach2 * plane.n2;
+}
+
+[[gnu::always_inline]] inline bool withinPastPlane(const Triangle& tri, const glm::vec3& p,
+                                                   float limit2, float reach2) {
     for (const Plane& e : tri.edge) {
         const float d = glm::dot(e.n, p) - e.offset;
         if (d > 0.0f && d * d > reach2 * e.n2) return false;
     }
     return distanceSquared(p, tri.a, tri.b, tri.c) <= limit2;
+}
+
+[[gnu::always_inline]] inline bool within(const Triangle& tri, const glm::vec3& p, float limit2) {
+    const float reach2 = reachSquared(limit2);
+    return !rejectedByPlane(tri.plane, p, reach2) && withinPastPlane(tri, p, limit2, reach2);
+}
+
+// Up to four points in lanes (x, y, z arrays of 4; unused lanes hold any finite value).
+struct Points4 {
+    alignas(16) float x[4], y[4], z[4];
+};
+
+// within(tri, p, limit2) for the four points of `p` at once: bit k of the result is lane k's
+// answer. The same float operations in the same order as the scalar within() and
+// distanceSquared() (SSE2 lanes are IEEE single precision, no contraction), so every answer
+// is bit for bit the scalar one; the branches of distanceSquared become per-lane selects in
+// the same priority.
+inline unsigned withinMask4(const Triangle& tri, const Points4& p, float limit2) {
+#if defined(__SSE2__)
+    const float reach2 = reachSquared(limit2);
+    const __m128 px = _mm_load_ps(p.x), py = _mm_load_ps(p.y), pz = _mm_load_ps(p.z);
+    auto dot = [](const glm::vec3& n, __m128 x, __m128 y, __m128 z) {
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(n.x), x), _mm_mul_ps(_mm_set1_ps(n.y), y)),
+                          _mm_mul_ps(_mm_set1_ps(n.z), z));
+    };
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 s = _mm_sub_ps(dot(tri.plane.n, px, py, pz), _mm_set1_ps(tri.plane.offset));
+    __m128 rejected = _mm_cmpgt_ps(_mm_mul_ps(s, s), _mm_set1_ps(reach2 * tri.plane.n2));
+    for (const Plane& e : tri.edge) {
+        const __m128 d = _mm_sub_ps(dot(e.n, px, py, pz), _mm_set1_ps(e.offset));
+        rejected = _mm_or_ps(rejected, _mm_and_ps(_mm_cmpgt_ps(d, zero),
+                                                  _mm_cmpgt_ps(_mm_mul_ps(d, d),
+                                                               _mm_set1_ps(reach2 * e.n2))));
+    }
+    if (_mm_movemask_ps(rejected) == 0xf) return 0u;
+    // distanceSquared, lane-wise.
+    const glm::vec3 a = tri.a, b = tri.b, c = tri.c;
+    const glm::vec3 ab = b - a, ac = c - a, cb = c - b;
+    auto sub = [](__m128 x, float v) { return _mm_sub_ps(x, _mm_set1_ps(v)); };
+    const __m128 apx = sub(px, a.x), apy = sub(py, a.y), apz = sub(pz, a.z);
+    const __m128 d1 = dot(ab, apx, apy, apz), d2 = dot(ac, apx, apy, apz);
+    const __m128 bpx = sub(px, b.x), bpy = sub(py, b.y), bpz = sub(pz, b.z);
+    const __m128 d3 = dot(ab, bpx, bpy, bpz), d4 = dot(ac, bpx, bpy, bpz);
+    const __m128 cpx = sub(px, c.x), cpy = sub(py, c.y), cpz = sub(pz, c.z);
+    const __m128 d5 = dot(ab, cpx, cpy, cpz), d6 = dot(ac, cpx, cpy, cpz);
+    const __m128 vc = _mm_sub_ps(_mm_mul_ps(d1, d4), _mm_mul_ps(d3, d2));
+    const __m128 vb = _mm_sub_ps(_mm_mul_ps(d5, d2), _mm_mul_ps(d1, d6));
+    const __m128 va = _mm_sub_ps(_mm_mul_ps(d3, d6), _mm_mul_ps(d5, d4));
+    const __m128 d43 = _mm_sub_ps(d4, d3), d56 = _mm_sub_ps(d5, d6);
+    auto le = [](__m128 x, __m128 y) { return _mm_cmple_ps(x, y); };
+    auto ge = [](__m128 x, __m128 y) { return _mm_cmpge_ps(x, y); };
+    auto all3 = [](__m128 x, __m128 y, __m128 z) { return _mm_and_ps(_mm_and_ps(x, y), z); };
+    const __m128 c1 = _mm_and_ps(le(d1, zero), le(d2, zero));
+    const __m128 c2 = _mm_and_ps(ge(d3, zero), le(d4, d3));
+    const __m128 c3 = _mm_and_ps(ge(d6, zero), le(d5, d6));
+    const __m128 c4 = all3(le(vc, zero), ge(d1, zero), le(d3, zero));
+    const __m128 c5 = all3(le(vb, zero), ge(d2, zero), le(d6, zero));
+    const __m128 c6 = all3(le(va, zero), ge(d43, zero), ge(d56, zero));
+    const __m128 t4 = _mm_div_ps(d1, _mm_sub_ps(d1, d3));
+    const __m128 t5 = _mm_div_ps(d2, _mm_sub_ps(d2, d6));
+    const __m128 t6 = _mm_div_ps(d43, _mm_add_ps(d43, d56));
+    const __m128 denom = _mm_add_ps(_mm_add_ps(va, vb), vc);
+    const __m128 v = _mm_div_ps(vb, denom), w = _mm_div_ps(vc, denom);
+    const __m128 inside = _mm_cmpneq_ps(denom, zero);
+    auto select = [](__m128 m, __m128 x, __m128 y) {
+        return _mm_or_ps(_mm_and_ps(m, x), _mm_andnot_ps(m, y));
+    };
+    __m128 q[3];
+    for (int k = 0; k < 3; ++k) {
+        const __m128 ak = _mm_set1_ps(a[k]), bk = _mm_set1_ps(b[k]), ck = _mm_set1_ps(c[k]);
+        const __m128 abk = _mm_set1_ps(ab[k]), ack = _mm_set1_ps(ac[k]);
+        __m128 r = select(inside,
+                          _mm_add_ps(_mm_add_ps(ak, _mm_mul_ps(abk, v)), _mm_mul_ps(ack, w)), ak);
+        r = select(c6, _mm_add_ps(bk, _mm_mul_ps(_mm_set1_ps(cb[k]), t6)), r);
+        r = select(c5, _mm_add_ps(ak, _mm_mul_ps(ack, t5)), r);
+        r = select(c4, _mm_add_ps(ak, _mm_mul_ps(abk, t4)), r);
+        r = select(c3, ck, r);
+        r = select(c2, bk, r);
+        q[k] = select(c1, ak, r);
+    }
+    const __m128 dx = _mm_sub_ps(px, q[0]), dy = _mm_sub_ps(py, q[1]), dz = _mm_sub_ps(pz, q[2]);
+    const __m128 dist =
+        _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+    const __m128 ok = _mm_andnot_ps(rejected, _mm_cmple_ps(dist, _mm_set1_ps(limit2)));
+    return static_cast<unsigned>(_mm_movemask_ps(ok));
+#else
+    unsigned mask = 0;
+    for (int k = 0; k < 4; ++k)
+        if (within(tri, glm::vec3(p.x[k], p.y[k], p.z[k]), limit2)) mask |= 1u << k;
+    return mask;
+#endif
 }
 
 struct GridFrame {
@@ -164,26 +274,42 @@ public:
         for (std::size_t i = 1; i < offsets_.size(); ++i)
             offsets_[i] += offsets_[i - 1];
         items_.resize(offsets_.back());
+        // Plane copies, padded so that a block of four read at any item stays in the arrays.
+        for (std::vector<float>* a : {&nx_, &ny_, &nz_, &offset_, &n2_})
+            a->assign(offsets_.back() + 3, 0.0f);
         fill_.assign(offsets_.begin(), offsets_.end() - 1);
         for (std::uint32_t t = 0; t < tris.size(); ++t) {
             if (boxes_[t].count == 0) continue;
-            forEachCell(tris[t], boxes_[t],
-                        [&](std::size_t cellId) { items_[fill_[cellId]++] = t; });
+            forEachCell(tris[t], boxes_[t], [&](std::size_t cellId) {
+                const std::uint32_t k = fill_[cellId]++;
+                const Plane& plane = tris[t].plane;
+                nx_[k] = plane.n.x, ny_[k] = plane.n.y, nz_[k] = plane.n.z;
+                offset_[k] = plane.offset, n2_[k] = plane.n2;
+                items_[k] = t;
+            });
         }
     }
 
     // Whether some triangle lies within `limit` of p; sets `found` to it.
     bool anyWithin(const glm::vec3& p, float limit, float limit2, std::uint32_t& found) const {
+        const float reach2 = reachSquared(limit2);
         const glm::ivec3 c0 = cellOf(p - glm::vec3(limit));
         const glm::ivec3 c1 = cellOf(p + glm::vec3(limit));
         for (int x = c0.x; x <= c1.x; ++x) {
             for (int y = c0.y; y <= c1.y; ++y) {
                 for (int z = c0.z; z <= c1.z; ++z) {
                     const std::size_t c = (static_cast<std::size_t>(x) * dims_.y + y) * dims_.z + z;
-                    for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
-                        if (isActive(items_[k]) && within(tris_[items_[k]], p, limit2)) {
-                            found = items_[k];
-                            return true;
+                    const std::uint32_t end = offsets_[c + 1];
+                    for (std::uint32_t k = offsets_[c]; k < end; k += 4) {
+                        unsigned pass = planePasses4(k, end, p, reach2);
+                        while (pass != 0) {
+                            const unsigned lane = static_cast<unsigned>(__builtin_ctz(pass));
+                            pass &= pass - 1;
+                            const std::uint32_t t = items_[k + lane];
+                            if (isActive(t) && withinPastPlane(tris_[t], p, limit2, reach2)) {
+                                found = t;
+                                return true;
+                            }
                         }
                     }
                 }
@@ -201,11 +327,11 @@ public:
     // The squared distance from p to the nearest triangle, if below limit2 (else limit2).
     float nearestDistance2(const glm::vec3& p, float limit, float limit2) const {
         float best = limit2;
-        auto test = [&](std::uint32_t t) {
+        auto test = [&](std::uint32_t t, const Plane& plane) {
+            const float s = glm::dot(plane.n, p) - plane.offset;
+            if (s * s >= best * plane.n2) return;
             if (!isActive(t)) return;
             const Triangle& tri = tris_[t];
-            const float s = glm::dot(tri.plane.n, p) - tri.plane.offset;
-            if (s * s >= best * tri.plane.n2) return;
             best = std::min(best, distanceSquared(p, tri.a, tri.b, tri.c));
         };
         const glm::ivec3 c0 = cellOf(p - glm::vec3(limit));
@@ -215,12 +341,12 @@ public:
                 for (int z = c0.z; z <= c1.z; ++z) {
                     const std::size_t c = (static_cast<std::size_t>(x) * dims_.y + y) * dims_.z + z;
                     for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k)
-                        test(items_[k]);
+                        test(items_[k], Plane{{nx_[k], ny_[k], nz_[k]}, offset_[k], n2_[k]});
                 }
             }
         }
         for (std::uint32_t t : big_)
-            test(t);
+            test(t, tris_[t].plane);
         return best;
     }
 
@@ -228,11 +354,20 @@ public:
     // such triangle is within the limit of p0, so the cells around p0 hold them all.
     bool anyWithinAll(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2, float limit,
                       float limit2, std::uint32_t& found) const {
-        auto test = [&](std::uint32_t t) {
+        const float reach2 = reachSquared(limit2);
+        // The plane tests of all three points first (from the copy of the plane the cell
+        // holds), then the rest; the answer is the conjunction, whatever the order.
+        auto rest = [&](std::uint32_t t) {
             if (!isActive(t)) return false;
             const Triangle& tri = tris_[t];
             // p0's cells hold triangles near p0: the other corners decide first.
-            return within(tri, p1, limit2) && within(tri, p2, limit2) && within(tri, p0, limit2);
+            return withinPastPlane(tri, p1, limit2, reach2) &&
+                   withinPastPlane(tri, p2, limit2, reach2) &&
+                   withinPastPlane(tri, p0, limit2, reach2);
+        };
+        auto test = [&](std::uint32_t t, const Plane& plane) {
+            return !rejectedByPlane(plane, p1, reach2) && !rejectedByPlane(plane, p2, reach2) &&
+                   !rejectedByPlane(plane, p0, reach2) && rest(t);
         };
         const glm::ivec3 c0 = cellOf(p0 - glm::vec3(limit));
         const glm::ivec3 c1 = cellOf(p0 + glm::vec3(limit));
@@ -240,22 +375,56 @@ public:
             for (int y = c0.y; y <= c1.y; ++y) {
                 for (int z = c0.z; z <= c1.z; ++z) {
                     const std::size_t c = (static_cast<std::size_t>(x) * dims_.y + y) * dims_.z + z;
-                    for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
-                        if (test(items_[k])) {
-                            found = items_[k];
-                            return true;
+                    const std::uint32_t end = offsets_[c + 1];
+                    for (std::uint32_t k = offsets_[c]; k < end; k += 4) {
+                        unsigned pass = planePasses4(k, end, p1, reach2) &
+                                        planePasses4(k, end, p2, reach2) &
+                                        planePasses4(k, end, p0, reach2);
+                        while (pass != 0) {
+                            const unsigned lane = static_cast<unsigned>(__builtin_ctz(pass));
+                            pass &= pass - 1;
+                            if (rest(items_[k + lane])) {
+                                found = items_[k + lane];
+                                return true;
+                            }
                         }
                     }
                 }
             }
         }
         for (std::uint32_t t : big_) {
-            if (test(t)) {
+            if (test(t, tris_[t].plane)) {
                 found = t;
                 return true;
             }
         }
         return false;
+    }
+
+    // Bit k set when item `first + k` (below `end`) is not rejected by its plane for p: the
+    // test of rejectedByPlane on four items at once, the same float operations per lane.
+    [[gnu::always_inline]] unsigned planePasses4(std::uint32_t first, std::uint32_t end,
+                                                 const glm::vec3& p, float reach2) const {
+        const unsigned valid = end - first >= 4 ? 0xfu : (1u << (end - first)) - 1u;
+#if defined(__SSE2__)
+        const __m128 s = _mm_sub_ps(
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&nx_[first]), _mm_set1_ps(p.x)),
+                                  _mm_mul_ps(_mm_loadu_ps(&ny_[first]), _mm_set1_ps(p.y))),
+                       _mm_mul_ps(_mm_loadu_ps(&nz_[first]), _mm_set1_ps(p.z))),
+            _mm_loadu_ps(&offset_[first]));
+        const __m128 rejected =
+            _mm_cmpgt_ps(_mm_mul_ps(s, s), _mm_mul_ps(_mm_set1_ps(reach2), _mm_loadu_ps(&n2_[first])));
+        return ~static_cast<unsigned>(_mm_movemask_ps(rejected)) & valid;
+#else
+        unsigned pass = 0;
+        for (unsigned k = 0; k < 4; ++k) {
+            const std::uint32_t i = first + k;
+            if ((valid >> k & 1u) &&
+                !rejectedByPlane(Plane{{nx_[i], ny_[i], nz_[i]}, offset_[i], n2_[i]}, p, reach2))
+                pass |= 1u << k;
+        }
+        return pass;
+#endif
     }
 
     // Only triangles whose flag is set take part in queries (null: all).
@@ -304,6 +473,8 @@ private:
     glm::ivec3 dims_{1};
     glm::vec3 maxCell_{0.0f};
     std::vector<std::uint32_t> offsets_, items_, big_, fill_;
+    // Parallel to items_: the plane of the triangle filed there (rejectedByPlane), by component.
+    std::vector<float> nx_, ny_, nz_, offset_, n2_;
     std::vector<CellBox> boxes_;
 };
 
@@ -336,6 +507,37 @@ public:
         if (hint_ != kNoTriangle && grid_.isActive(hint_) && within(tris_[hint_], p, limit2_))
             return true;
         return grid_.anyWithin(p, limit_, limit2_, hint_);
+    }
+    // near() for each point in order, up to the first that is not near (false then): the same
+    // answers and the same hint afterwards as those calls, with the hint tried on four points
+    // at once (withinMask4).
+    bool nearEach(std::span<const glm::vec3> points) {
+        std::size_t i = 0;
+        while (i < points.size()) {
+            if (hint_ != kNoTriangle && grid_.isActive(hint_)) {
+                const Triangle& tri = tris_[hint_];
+                while (i < points.size()) {
+                    const std::size_t n = std::min<std::size_t>(4, points.size() - i);
+                    Points4 block;
+                    for (std::size_t k = 0; k < 4; ++k) {
+                        const glm::vec3& q = points[i + std::min(k, n - 1)];
+                        block.x[k] = q.x, block.y[k] = q.y, block.z[k] = q.z;
+                    }
+                    const unsigned all = (1u << n) - 1u;
+                    const unsigned missed = ~withinMask4(tri, block, limit2_) & all;
+                    if (missed == 0) {
+                        i += n;
+                        continue;
+                    }
+                    i += static_cast<std::size_t>(__builtin_ctz(missed));
+                    break;
+                }
+                if (i == points.size()) return true;
+            }
+            if (!grid_.anyWithin(points[i], limit_, limit2_, hint_)) return false;
+            ++i;
+        }
+        return true;
     }
     // The triangle that answered the last successful near().
     std::uint32_t lastFound() const { return hint_; }

@@ -117,6 +117,8 @@ void Scene::append(Scene&& other, const std::string& name) {
         sourceFiles.push_back(std::move(f));
     for (auto& f : other.referencedFiles)
         referencedFiles.push_back(std::move(f));
+    for (auto& n : other.importNotes)
+        importNotes.push_back(std::move(n));
     updateWorldTransforms();
 }
 

@@ -105,6 +105,9 @@ public:
     // Files the source files pulled in (glTF buffers and images, material libraries...),
     // absolute, as the importers read them: with sourceFiles, what the scene costs on disk.
     std::vector<std::filesystem::path> referencedFiles;
+    // What an importer changed on the way in, one line each naming the file (e.g. a CAD face
+    // coarsened by the tessellation budget); shown by `hlod info`.
+    std::vector<std::string> importNotes;
 
     Scene();
 

@@ -12,7 +12,7 @@ namespace hlod {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x534c4448; // "HDLS"
-constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kVersion = 3;
 
 class Writer {
 public:
@@ -49,7 +49,9 @@ public:
     template <typename T> std::vector<T> array() {
         const std::uint64_t n = count(sizeof(T));
         std::vector<T> v(n);
-        std::memcpy(v.data(), bytes.data() + pos, n * sizeof(T));
+        // An empty vector's data() may be null, which memcpy must not get even for 0 bytes
+        // (found by fuzz_scene under UBSan).
+        if (n > 0) std::memcpy(v.data(), bytes.data() + pos, n * sizeof(T));
         pos += n * sizeof(T);
         return v;
     }
@@ -123,6 +125,9 @@ std::string writeSceneBinary(const Scene& s) {
     w.pod<std::uint64_t>(s.referencedFiles.size());
     for (const auto& f : s.referencedFiles)
         w.str(f.string());
+    w.pod<std::uint64_t>(s.importNotes.size());
+    for (const auto& n : s.importNotes)
+        w.str(n);
     return std::move(w.out);
 }
 
@@ -184,6 +189,9 @@ Scene readSceneBinary(const std::string& bytes, const std::filesystem::path& ori
     s.referencedFiles.resize(r.count(8));
     for (auto& f : s.referencedFiles)
         f = r.str();
+    s.importNotes.resize(r.count(8));
+    for (auto& n : s.importNotes)
+        n = r.str();
     // Consistent links make the walk from the root finite: every child names its parent.
     if (s.nodes.empty() || s.nodes[0].parent != kNoId) r.fail();
     for (Id i = 0; i < s.nodes.size(); ++i) {

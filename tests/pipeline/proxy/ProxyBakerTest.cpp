@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <fstream>
 #include <mutex>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -127,6 +128,38 @@ TEST(ProxyBaker, RerunReusesEveryProxyAndMatchesTheBakedBytes) {
     EXPECT_EQ(second.baked, 0u);
     EXPECT_EQ(second.reused, 5u);
     EXPECT_EQ(proxyBytes(first), proxyBytes(second));
+}
+
+TEST(ProxyBaker, CorruptOrTruncatedCacheEntriesAreRebakedNotTrusted) {
+    Fixture f;
+    test::TempDir dir;
+    BakeParams params;
+    params.cacheDir = dir.path();
+    const BakeResult first = bakeProxies(f.scene, f.tree, params);
+    std::vector<std::filesystem::path> entries;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+        entries.push_back(e.path());
+    std::sort(entries.begin(), entries.end());
+    ASSERT_EQ(entries.size(), 5u);
+    // One entry cut in half (a disk that filled up under another tool), one with a flipped
+    // byte in its geometry (bit rot): both are misses, so exactly those two nodes rebake; their
+    // parents' keys do not depend on the files, so the parents are still reused.
+    std::filesystem::resize_file(entries[0], std::filesystem::file_size(entries[0]) / 2);
+    {
+        std::fstream io(entries[1], std::ios::in | std::ios::out | std::ios::binary);
+        io.seekg(60);
+        const char c = static_cast<char>(io.get() ^ 0x10);
+        io.seekp(60);
+        io.put(c);
+    }
+    const BakeResult second = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(second.baked, 2u);
+    EXPECT_EQ(second.reused, 3u);
+    EXPECT_EQ(proxyBytes(first), proxyBytes(second));
+    // The rebake healed both entries: a third run reuses everything.
+    const BakeResult third = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(third.baked, 0u);
+    EXPECT_EQ(third.reused, 5u);
 }
 
 TEST(ProxyBaker, ParameterChangeRebakesExactlyWhatItAffects) {

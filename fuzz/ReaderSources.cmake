@@ -1,0 +1,39 @@
+# The pipeline sources the fuzzed readers (all but `project`) and the sanitized tests link, found
+# from the linker map of those executables (fuzz/CMakeLists.txt). HLOD_FUZZ_ALL_SOURCES=ON
+# builds the whole pipeline instead (for the project target, whose graph pulls in every step).
+set(HLOD_READER_SOURCES
+  cluster/ClusterTree.cpp
+  core/AtomicFile.cpp
+  core/Error.cpp
+  core/Progress.cpp
+  export/PackageReader.cpp
+  io/Ac3dTextures.cpp
+  io/AssimpImporter.cpp
+  io/CadBudget.cpp
+  io/CadCrashGuard.cpp
+  io/CadImporter.cpp
+  io/CadTessellation.cpp
+  io/CadXcaf.cpp
+  io/GlbMeshopt.cpp
+  io/GlbWriter.cpp
+  io/GltfAccessor.cpp
+  io/GltfImporter.cpp
+  io/GltfMeshopt.cpp
+  io/GltfTrs.cpp
+  io/ImageDecode.cpp
+  io/Import.cpp
+  io/IsolatedImport.cpp
+  io/Precheck.cpp
+  io/SampleScene.cpp
+  io/SgiImage.cpp
+  io/ThirdPartyImpl.cpp
+  io/Validate.cpp
+  proxy/ContentHash.cpp
+  proxy/ProxyCache.cpp
+  scene/Primitives.cpp
+  scene/RgbaImage.cpp
+  scene/Scene.cpp
+  scene/SceneBinary.cpp
+  select/CameraPath.cpp
+  select/Camera.cpp
+)

@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "pipeline/proxy/SurfaceQuery.h"
+
+using namespace hlod;
+using namespace hlod::surface;
+
+namespace {
+
+// Triangles of every shape the simplifier meets: ordinary, slivers, needles, collinear and
+// point-like (degenerate), at small and large coordinates.
+Triangle randomTriangle(std::mt19937& rng) {
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::uniform_int_distribution<int> kind(0, 5);
+    const float scale = std::pow(10.0f, std::uniform_real_distribution<float>(-2.0f, 2.0f)(rng));
+    const glm::vec3 at =
+        glm::vec3(unit(rng), unit(rng), unit(rng)) *
+        std::pow(10.0f, std::uniform_real_distribution<float>(-1.0f, 3.0f)(rng));
+    const glm::vec3 a = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
+    glm::vec3 b = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
+    glm::vec3 c = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
+    switch (kind(rng)) {
+    case 1: c = a + (b - a) * 0.37f + glm::vec3(unit(rng)) * scale * 1e-4f; break; // sliver
+    case 2: c = a + (b - a) * 0.61f; break;                                          // collinear
+    case 3: b = a; break;                                                            // two equal
+    case 4: b = a, c = a; break;                                                     // a point
+    default: break;
+    }
+    return makeTriangle(a, b, c);
+}
+
+// A point about `limit` from the triangle (on it, beyond its corners, off its plane).
+glm::vec3 pointNear(std::mt19937& rng, const Triangle& tri, float limit) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), side(-1.0f, 1.0f);
+    float u = unit(rng) * 1.4f - 0.2f, v = unit(rng) * 1.4f - 0.2f;
+    const glm::vec3 onPlane = tri.a + (tri.b - tri.a) * u + (tri.c - tri.a) * v;
+    const glm::vec3 off = glm::vec3(side(rng), side(rng), side(rng)) * limit * 1.2f;
+    return onPlane + off;
+}
+
+} // namespace
+
+TEST(SurfaceQuery, WithinMask4AnswersAsWithinLaneByLane) {
+    std::mt19937 rng(7);
+    std::size_t inside = 0, total = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const Triangle tri = randomTriangle(rng);
+        const float extent = glm::length(tri.b - tri.a) + glm::length(tri.c - tri.a) + 1e-3f;
+        const float limit = extent * std::pow(10.0f, std::uniform_real_distribution<float>(-3.0f, 0.5f)(rng));
+        for (int round = 0; round < 8; ++round) {
+            Points4 p;
+            glm::vec3 q[4];
+            for (int k = 0; k < 4; ++k) {
+                q[k] = pointNear(rng, tri, limit);
+                p.x[k] = q[k].x, p.y[k] = q[k].y, p.z[k] = q[k].z;
+            }
+            const unsigned mask = withinMask4(tri, p, limit * limit);
+            for (int k = 0; k < 4; ++k) {
+                const bool scalar = within(tri, q[k], limit * limit);
+                ASSERT_EQ(scalar, (mask >> k & 1u) != 0) << "triangle " << i << " lane " << k;
+                inside += scalar ? 1 : 0;
+                ++total;
+            }
+        }
+    }
+    // Both answers occur often, so the lanes were really compared.
+    EXPECT_GT(inside, total / 10);
+    EXPECT_LT(inside, total * 9 / 10);
+}
+
+namespace {
+
+// A wavy sheet of n x n quads, with some triangles folded up.
+struct Sheet {
+    std::vector<glm::vec3> positions;
+    std::vector<std::uint32_t> indices;
+};
+
+Sheet sheet(int n) {
+    Sheet s;
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            s.positions.push_back(glm::vec3(x, y, 0.3f * std::sin(0.7f * x) * std::cos(0.4f * y)));
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            const std::uint32_t v = static_cast<std::uint32_t>(y * (n + 1) + x);
+            const std::uint32_t w = v + static_cast<std::uint32_t>(n + 1);
+            s.indices.insert(s.indices.end(), {v, v + 1, w + 1, v, w + 1, w});
+        }
+    }
+    return s;
+}
+
+bool bruteNear(const Sheet& s, const glm::vec3& p, float limit) {
+    for (std::size_t t = 0; t < s.indices.size(); t += 3) {
+        const Triangle tri = makeTriangle(s.positions[s.indices[t]], s.positions[s.indices[t + 1]],
+                                          s.positions[s.indices[t + 2]]);
+        if (within(tri, p, limit * limit)) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+TEST(SurfaceQuery, NearEachIsNearPointByPoint) {
+    const Sheet s = sheet(24);
+    const float limit = 0.21f;
+    NearSurface batch, single;
+    batch.reset(s.positions, s.indices, limit);
+    single.reset(s.positions, s.indices, limit);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> xy(-1.0f, 25.0f), z(-0.6f, 0.6f), step(-0.3f, 0.3f);
+    std::size_t failures = 0;
+    for (int run = 0; run < 3000; ++run) {
+        // Walks of nearby points (the hint answers most), some leaving the surface.
+        std::vector<glm::vec3> points;
+        glm::vec3 p(xy(rng), xy(rng), z(rng) * 0.5f);
+        const int count = 1 + static_cast<int>(rng() % 40);
+        for (int k = 0; k < count; ++k) {
+            points.push_back(p);
+            p += glm::vec3(step(rng), step(rng), step(rng) * 0.3f);
+        }
+        bool expected = true;
+        for (const glm::vec3& q : points) {
+            if (!single.near(q)) {
+                expected = false;
+                break;
+            }
+        }
+        ASSERT_EQ(expected, batch.nearEach(points)) << "run " << run;
+        ASSERT_EQ(single.lastFound(), batch.lastFound()) << "run " << run;
+        failures += expected ? 0 : 1;
+    }
+    EXPECT_GT(failures, 100u);
+    EXPECT_LT(failures, 2900u);
+}
+
+TEST(SurfaceQuery, GridQueriesAnswerAsEveryTriangle) {
+    const Sheet s = sheet(16);
+    const float limit = 0.17f;
+    NearSurface surface;
+    surface.reset(s.positions, s.indices, limit);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> xy(-1.0f, 17.0f), z(-0.7f, 0.7f), d(-0.15f, 0.15f);
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 p(xy(rng), xy(rng), z(rng));
+        ASSERT_EQ(bruteNear(s, p, limit), surface.near(p)) << i;
+        const glm::vec3 q = p + glm::vec3(d(rng), d(rng), d(rng));
+        const glm::vec3 r = p + glm::vec3(d(rng), d(rng), d(rng));
+        bool common = false;
+        for (std::size_t t = 0; t < s.indices.size() && !common; t += 3) {
+            const Triangle tri = makeTriangle(s.positions[s.indices[t]],
+                                              s.positions[s.indices[t + 1]],
+                                              s.positions[s.indices[t + 2]]);
+            common = within(tri, p, limit * limit) && within(tri, q, limit * limit) &&
+                     within(tri, r, limit * limit);
+        }
+        ASSERT_EQ(common, surface.nearAll(p, q, r)) << i;
+    }
+}
