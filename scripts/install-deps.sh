@@ -16,6 +16,7 @@ PACKAGES=(
   clang-14 libfuzzer-14-dev
   xvfb xauth libgl1-mesa-dri mesa-utils
   chromium
+  slurmctld slurmd slurm-client munge
 )
 # npm: the machine may ship Node.js from another Debian-format repo that bundles npm;
 # only ask Debian for it when no npm command exists at all.
