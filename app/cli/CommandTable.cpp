@@ -116,6 +116,11 @@ std::vector<CommandSpec> makeCommands() {
            "geometry"},
           {"--proxy-textures", "", "on|off",
            "Bake a base-colour atlas per proxy (on) or keep vertex colours only (off).", "on"},
+          {"--draw", "", "package|nodes",
+           "How HLOD is drawn: package: the exported tiles as a 3D Tiles runtime draws them (a "
+           "leaf group's meshes merged per look, one draw each); nodes: one draw per selected "
+           "node or leaf mesh (the thesis' count).",
+           "package"},
           {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
     return v;
 }

@@ -1,6 +1,6 @@
 // `hlod bench [SCENE...] --out DIR [--frames N] [--size WxH] [--configs LIST]
 // [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]
-// [--proxy-textures on|off]`:
+// [--proxy-textures on|off] [--draw package|nodes]`:
 // the thesis' evaluation on one scene (see bench/BenchRun.h for what is measured and how).
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
 // side_by_side_*.png. Needs an X display (xvfb-run -a on a headless machine).
@@ -105,6 +105,11 @@ int runBench(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument,
                     "--proxy-textures must be on or off, not '" + textures + "'");
     o.proxyTextures = textures == "on";
+    const std::string draw = args.value("--draw", "package");
+    if (draw != "package" && draw != "nodes")
+        throw Error(ErrorCode::InvalidArgument,
+                    "--draw must be package or nodes, not '" + draw + "'");
+    o.draw = draw == "package" ? HlodDraw::Package : HlodDraw::Nodes;
     if (const char* d = std::getenv("DISPLAY"); !d || !*d)
         throw Error(ErrorCode::InvalidArgument,
                     "bench renders with VTK, which needs an X display here (Debian's VTK has no "

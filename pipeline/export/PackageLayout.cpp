@@ -117,22 +117,14 @@ private:
             leavesBelow(c, out);
     }
 
+    // Whether inner node n (not the root) is too small to matter: its leaves join its parent's
+    // leaf group (see the header).
+    bool folded(Id n) const {
+        return n != tree_.root && !tree_.nodes[n].isLeaf() &&
+               triangles_[n] <= kSmallSubtreeTriangles;
+    }
+
     void innerTile(Id n, int parent) {
-        if (parent >= 0 && triangles_[n] <= kSmallSubtreeTriangles) {
-            // Too small to matter: its leaves in one tile of its parent (see the header).
-            std::vector<Id> leaves;
-            leavesBelow(n, leaves);
-            const int tile = groupTile(std::move(leaves), parent, n);
-            std::vector<Id> stack{n};
-            while (!stack.empty()) {
-                const Id m = stack.back();
-                stack.pop_back();
-                layout_.tileOfNode[m] = tile;
-                for (Id c : tree_.nodes[m].children)
-                    stack.push_back(c);
-            }
-            return;
-        }
         const NodeBake& b = bake_.nodes[n];
         const bool hasContent = b.hasProxy && !b.proxy.empty();
         TilePlan t;
@@ -158,18 +150,39 @@ private:
         }
         const int self = addTile(std::move(t));
         layout_.tileOfNode[n] = self;
-        std::vector<Id> leaves;
+        // Leaf children and the leaves of folded children: one group, merged per look.
+        std::vector<Id> leaves, foldedChildren;
         for (Id c : tree_.nodes[n].children) {
-            if (tree_.nodes[c].isLeaf())
+            if (tree_.nodes[c].isLeaf()) {
                 leaves.push_back(c);
-            else
+            } else if (folded(c)) {
+                leavesBelow(c, leaves);
+                foldedChildren.push_back(c);
+            } else {
                 innerTile(c, self);
+            }
         }
         if (leaves.empty()) return;
         std::vector<std::vector<Id>> groups;
         splitGroup(std::move(leaves), groups);
         for (std::vector<Id>& g : groups)
             groupTile(std::move(g), self, n);
+        // A folded node is shown by the group tile of its first leaf.
+        for (Id c : foldedChildren) {
+            std::vector<Id> below;
+            leavesBelow(c, below);
+            const int tile = layout_.tileOfNode[below.front()];
+            std::vector<Id> stack(tree_.nodes[c].children.begin(), tree_.nodes[c].children.end());
+            layout_.tileOfNode[c] = tile;
+            while (!stack.empty()) {
+                const Id m = stack.back();
+                stack.pop_back();
+                if (tree_.nodes[m].isLeaf()) continue;
+                layout_.tileOfNode[m] = tile;
+                stack.insert(stack.end(), tree_.nodes[m].children.begin(),
+                             tree_.nodes[m].children.end());
+            }
+        }
     }
 
     int addContent(ContentPlan c) {

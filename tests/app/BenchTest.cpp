@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
+#include <iterator>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +117,70 @@ TEST(Bench, BadArgumentsAreOneLineUsageErrors) {
     EXPECT_NE(badConfig.err.find("lod9"), std::string::npos) << badConfig.err;
     const auto badSize = runCli({"bench", "--out", "/tmp/x", "--size", "12"});
     EXPECT_EQ(badSize.exitCode, 2);
+    const auto badDraw = runCli({"bench", "--out", "/tmp/x", "--draw", "tiles"});
+    EXPECT_NE(badDraw.exitCode, 0);
+    EXPECT_NE(badDraw.err.find("--draw must be package or nodes, not 'tiles'"), std::string::npos)
+        << badDraw.err;
+}
+
+namespace {
+
+// Draw calls a runtime issues when it draws every tile of a package: glTF primitives of the
+// mesh nodes in every tile GLB (read from the GLB's JSON chunk).
+std::size_t packagePrimitives(const fs::path& package) {
+    std::size_t primitives = 0;
+    for (const auto& e : fs::directory_iterator(package / "tiles")) {
+        if (e.path().extension() != ".glb") continue;
+        std::ifstream in(e.path(), std::ios::binary);
+        std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
+        if (bytes.size() < 20) continue;
+        std::uint32_t length = 0;
+        std::memcpy(&length, bytes.data() + 12, 4);
+        const auto j = nlohmann::json::parse(bytes.begin() + 20, bytes.begin() + 20 + length);
+        for (const auto& node : j.value("nodes", nlohmann::json::array()))
+            if (node.contains("mesh"))
+                primitives += j["meshes"][node["mesh"].get<std::size_t>()]["primitives"].size();
+    }
+    return primitives;
+}
+
+double hlodDrawsMax(const fs::path& out) {
+    std::ifstream in(out / "summary.json");
+    const auto j = nlohmann::json::parse(in);
+    for (const auto& c : j["configs"])
+        if (c["config"] == "HLOD, sphere") return c["draw_calls"]["max"].get<double>();
+    ADD_FAILURE() << "no HLOD, sphere in " << out;
+    return 0.0;
+}
+
+} // namespace
+
+TEST(Bench, PackageDrawCountsWhatThePackageHolds) {
+    // --draw package (the default) draws the exported tiles: never more draws in a frame than
+    // the package has primitives (a proxy tile is one draw, a leaf group one per look), and
+    // the summary says which count it is. --draw nodes draws one per selected node.
+    if (!haveDisplay()) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
+    TempOut out;
+    const auto built = runCli({"build", "-o", (out.path / "pkg").string(), "--threads", "2",
+                               "--no-cache"},
+                              600, 8ull << 30);
+    ASSERT_EQ(built.exitCode, 0) << built.err;
+    const std::size_t primitives = packagePrimitives(out.path / "pkg");
+    ASSERT_GT(primitives, 0u);
+    for (const char* draw : {"package", "nodes"}) {
+        const fs::path o = out.path / draw;
+        const auto r = runCli({"bench", "--out", o.string(), "--frames", "6", "--size", "320x180",
+                               "--threads", "2", "--no-cache", "--configs", "original,sphere",
+                               "--draw", draw},
+                              600, 8ull << 30);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        std::ifstream in(o / "summary.json");
+        EXPECT_EQ(nlohmann::json::parse(in)["hlod_draw"], draw);
+        if (std::string(draw) == "package") {
+            EXPECT_GT(hlodDrawsMax(o), 0.0);
+            EXPECT_LE(hlodDrawsMax(o), static_cast<double>(primitives));
+        }
+    }
 }
 
 TEST(Bench, BadCameraPathNamesTheFile) {

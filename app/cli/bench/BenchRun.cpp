@@ -4,8 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
+#include <map>
 #include <memory>
+#include <tuple>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -15,6 +19,7 @@
 #include "pipeline/eval/BenchReport.h"
 #include "pipeline/eval/ImageError.h"
 #include "pipeline/eval/Plot.h"
+#include "pipeline/export/PackageLayout.h"
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/DlodChain.h"
 #include "pipeline/proxy/ProxyEconomy.h"
@@ -37,6 +42,14 @@ struct Config {
     std::unique_ptr<SelectionTree> selection;
     std::unique_ptr<FrontCache> cache;
     std::vector<int> nodeDrawable; // per tree node, -1 when it draws nothing
+    // HLOD drawn as its package (HlodDraw::Package): the tiles, and per content what it draws.
+    struct ContentDraw {
+        std::vector<int> drawables;
+        std::uint64_t triangles = 0;
+    };
+    std::unique_ptr<PackageLayout> layout;
+    std::vector<ContentDraw> contentDraws; // parallel to layout->contents
+    std::deque<Mesh> mergedMeshes;         // leaf groups' merged primitives (renderer keys by address)
     // Original / DLOD: per instance, per level (Original: level 0 only)
     std::vector<std::vector<int>> instanceDrawables;
 };
@@ -69,6 +82,114 @@ std::string formatCount(double v) {
     else
         std::snprintf(buf, sizeof(buf), "%.0f", v);
     return buf;
+}
+
+// Per-frame look of merged leaves: one merged primitive per look, as the package merges them
+// (TileContent.h: base colour, texture, alpha, and which vertex streams the leaves carry).
+using MergeKey = std::tuple<float, float, float, float, float, float, float, float,
+                            const RgbaImage*, int, float, bool, bool, bool>;
+
+MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh& mesh) {
+    return {color.r,           color.g,
+            color.b,           color.a,
+            look.factor.r,     look.factor.g,
+            look.factor.b,     look.factor.a,
+            look.texture,      static_cast<int>(look.alphaMode),
+            look.alphaCutoff,  !mesh.normals.empty(),
+            !mesh.uvs.empty(), !mesh.colors.empty()};
+}
+
+// Appends `mesh` placed by `world` to `out` (normals by the inverse transpose, the winding
+// flipped by a mirror), as TileContent.cpp merges a leaf group's leaves.
+void appendPlaced(Mesh& out, const Mesh& mesh, const glm::dmat4& world) {
+    const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(world));
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    for (const glm::vec3& v : mesh.positions)
+        out.positions.push_back(glm::vec3(world * glm::dvec4(glm::dvec3(v), 1.0)));
+    for (const glm::vec3& n : mesh.normals) {
+        const glm::dvec3 t = normalMatrix * glm::dvec3(n);
+        const double len = glm::length(t);
+        out.normals.push_back(len > 0.0 ? glm::vec3(t / len) : glm::vec3(0, 1, 0));
+    }
+    out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+    out.colors.insert(out.colors.end(), mesh.colors.begin(), mesh.colors.end());
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        out.indices.push_back(base + mesh.indices[t]);
+        out.indices.push_back(base + mesh.indices[t + (mirrored ? 2 : 1)]);
+        out.indices.push_back(base + mesh.indices[t + (mirrored ? 1 : 2)]);
+    }
+}
+
+// The package's contents as drawables: a proxy draws its node's proxy; a leaf group draws its
+// instanced leaves one by one and its other leaves merged per look (one drawable each).
+void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& renderer,
+                         const std::vector<glm::vec4>& instColor,
+                         const std::vector<SurfaceLook>& instLook) {
+    c.layout = std::make_unique<PackageLayout>(planPackage(scene, c.build->tree, c.build->bake));
+    c.contentDraws.resize(c.layout->contents.size());
+    for (std::size_t k = 0; k < c.layout->contents.size(); ++k) {
+        const ContentPlan& plan = c.layout->contents[k];
+        Config::ContentDraw& draw = c.contentDraws[k];
+        if (plan.proxy) {
+            if (c.nodeDrawable[plan.node] >= 0) {
+                draw.drawables.push_back(c.nodeDrawable[plan.node]);
+                draw.triangles = c.build->bake.nodes[plan.node].proxy.triangleCount();
+            }
+            continue;
+        }
+        std::map<MergeKey, Mesh*> merged;
+        std::vector<std::pair<Mesh*, Id>> mergedOrder; // first member's instance, for its look
+        for (const LeafSlot& slot : plan.leaves) {
+            const Id i = slot.instance;
+            const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
+            if (mesh.triangleCount() == 0) continue;
+            draw.triangles += mesh.triangleCount();
+            if (!slot.merged) {
+                draw.drawables.push_back(renderer.addMesh(c.layer, mesh, scene.instanceTransform(i),
+                                                          instColor[i], instLook[i]));
+                continue;
+            }
+            auto [it, added] = merged.try_emplace(mergeKeyOf(instColor[i], instLook[i], mesh));
+            if (added) {
+                Mesh& m = c.mergedMeshes.emplace_back();
+                m.name = "merged";
+                m.material = mesh.material;
+                it->second = &m;
+                mergedOrder.emplace_back(&m, i);
+            }
+            appendPlaced(*it->second, mesh, scene.instanceTransform(i));
+        }
+        for (const auto& [m, i] : mergedOrder)
+            draw.drawables.push_back(
+                renderer.addMesh(c.layer, *m, glm::dmat4(1.0), instColor[i], instLook[i]));
+    }
+}
+
+// The package's tiles a 3D Tiles runtime draws for `camera` (REPLACE refinement): a tile whose
+// bounding box misses the frustum is skipped with everything below it; a node's tile is
+// refined where Algorithm 5 refines the node (its geometric error is set for that, Package.h);
+// a leaf-group tile is drawn whenever it is reached.
+void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& frustum,
+                   std::vector<int>& draw, FrameRecord& r) {
+    const PackageLayout& layout = *c.layout;
+    if (layout.tiles.empty()) return;
+    std::vector<int> stack{0};
+    while (!stack.empty()) {
+        const TilePlan& tile = layout.tiles[static_cast<std::size_t>(stack.back())];
+        stack.pop_back();
+        ++r.nodesVisited;
+        if (!frustum.intersectsSphere(tile.worldBox.center(), tile.worldBox.diagonal() * 0.5))
+            continue;
+        if (tile.node != kNoId && !tile.children.empty() && cls.tooBig(tile.node)) {
+            stack.insert(stack.end(), tile.children.begin(), tile.children.end());
+            continue;
+        }
+        if (tile.content < 0) continue;
+        const Config::ContentDraw& d = c.contentDraws[static_cast<std::size_t>(tile.content)];
+        draw.insert(draw.end(), d.drawables.begin(), d.drawables.end());
+        r.triangles += d.triangles;
+    }
 }
 
 } // namespace
@@ -225,6 +346,8 @@ void runBench(const Scene& scene, const BenchOptions& o) {
             c.selection = std::make_unique<SelectionTree>(
                 tree, std::move(tris), rootHasNoProxy(tree, c.build->bake));
             c.cache = std::make_unique<FrontCache>(*c.selection);
+            if (o.draw == HlodDraw::Package)
+                addPackageDrawables(c, scene, renderer, instColor, instLook);
         } else {
             c.instanceDrawables.resize(nInst);
             for (Id i = 0; i < nInst; ++i) {
@@ -266,7 +389,10 @@ void runBench(const Scene& scene, const BenchOptions& o) {
             r.config = c.name;
             std::vector<int> draw;
             const auto t0 = Clock::now();
-            if (c.kind == Kind::Hlod) {
+            if (c.kind == Kind::Hlod && c.layout) {
+                selectPackage(c, NodeClassifier(*c.selection, cam, {selectionS}), frustum, draw, r);
+                r.selectionUs = msSince(t0) * 1000.0;
+            } else if (c.kind == Kind::Hlod) {
                 const SelectionResult sel = c.cache->select(cam, {selectionS});
                 r.selectionUs = msSince(t0) * 1000.0;
                 r.nodesVisited = sel.nodesVisited;
@@ -391,6 +517,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                        : o.shading == Shading::Colour ? "colour"
                                                       : "textured";
     extra["proxy_textures"] = o.proxyTextures;
+    extra["hlod_draw"] = o.draw == HlodDraw::Package ? "package" : "nodes";
     extra["psnr_cap_db"] = kPsnrCapDb;
     extra["camera_path"] = o.pathFile ? o.pathFile->string() : std::string("automatic");
     extra["statistics"] = nlohmann::json::array();

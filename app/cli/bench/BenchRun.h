@@ -10,7 +10,15 @@
 //   Hausdorff, dlodDeviations) covers at most the pixel error of the 1080 px reference
 //   viewport at the instance's distance: the rule the proxies follow at their switch. (The
 //   thesis' projected-size thresholds showed count-driven reductions that had torn a mesh.)
-// - HLOD: the draw list of the front cache selection (LodSelection.h, thesis Algorithm 5).
+// - HLOD, drawn as its package (--draw package, the default): the tiles `hlod build` exports
+//   (PackageLayout.h), selected as a 3D Tiles runtime selects them (REPLACE refinement, a tile
+//   culled by its box, a node's tile refined where Algorithm 5 refines the node). A proxy
+//   tile is one draw; a leaf-group tile draws its instanced leaves one by one and its other
+//   leaves merged into one mesh per look, as the GLB stores them. Draw calls, triangles and
+//   image are what a runtime gets from the package (a group is drawn whole, also its leaves
+//   outside the frustum).
+// - HLOD, one draw per node (--draw nodes, the thesis' count): the draw list of the front
+//   cache selection (LodSelection.h, thesis Algorithm 5), every leaf mesh its own draw.
 // S in render pixels is the bake's screen size (--screen-size, default 300 px at the bake's
 // reference viewport of 1080 px) scaled to the render height: S * height / 1080, so nodes
 // switch at the distances their proxies were baked for (the proxy error there stays <= 1 px
@@ -34,6 +42,8 @@
 
 namespace hlod::cli {
 
+enum class HlodDraw { Package, Nodes };
+
 struct BenchOptions {
     std::filesystem::path out;
     std::vector<std::string> inputs; // for the summary
@@ -49,6 +59,7 @@ struct BenchOptions {
     Shading shading = Shading::Geometry;
     std::filesystem::path cacheDir; // proxy cache, empty = none
     bool proxyTextures = true;      // bake base-colour atlases (drawn in Textured shading)
+    HlodDraw draw = HlodDraw::Package;
 };
 
 inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",

@@ -216,3 +216,85 @@ TEST(PackageCompact, ASceneOfOneMeshIsOneLeafTile) {
     // 24 segments x 16 rings: 24 x 14 quads of two triangles plus two fans of 24 at the poles.
     EXPECT_EQ(readPackageScene(readPackage(tmp / "pkg")).stats().triangles, 720u);
 }
+
+TEST(PackageCompact, SmallSubtreesJoinTheirParentsLeafGroup) {
+    // A fence: 64 posts of 12 triangles in a row, and two big spheres at its ends. Clusters of
+    // a few posts hold far fewer than kSmallSubtreeTriangles: they get no tiles of their own;
+    // their leaves join the leaf group of the nearest node that has a tile, merged with their
+    // siblings' into one primitive per look (one draw for the whole group, not one per small
+    // subtree).
+    Scene s;
+    const Id post = s.addMesh(makeBox({0.1f, 1.0f, 0.1f}));
+    const Id ball = s.addMesh(makeSphere(2.0f, 48, 32));
+    for (int i = 0; i < 64; ++i)
+        s.addInstance(post, s.addNode("post" + std::to_string(i), 0,
+                                      glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5, 0, 0))));
+    s.addInstance(ball, s.addNode("west", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(-5, 0, 0))));
+    s.addInstance(ball, s.addNode("east", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(100, 0, 0))));
+    s.updateWorldTransforms();
+    const Build b(std::move(s));
+    const PackageLayout layout = planPackage(b.scene, b.tree, b.bake);
+    // Original triangles below each node.
+    std::vector<std::size_t> tris(b.tree.nodes.size(), 0);
+    std::vector<Id> post_order;
+    std::vector<Id> stack{b.tree.root};
+    while (!stack.empty()) {
+        const Id n = stack.back();
+        stack.pop_back();
+        post_order.push_back(n);
+        for (Id c : b.tree.nodes[n].children)
+            stack.push_back(c);
+    }
+    for (auto it = post_order.rbegin(); it != post_order.rend(); ++it) {
+        const ClusterNode& node = b.tree.nodes[*it];
+        if (node.isLeaf()) {
+            tris[*it] = b.scene.meshes[b.scene.instances[node.instance].mesh].triangleCount();
+            continue;
+        }
+        for (Id c : node.children)
+            tris[*it] += tris[c];
+    }
+    std::size_t folded = 0;
+    for (Id n = 0; n < b.tree.nodes.size(); ++n) {
+        const ClusterNode& node = b.tree.nodes[n];
+        if (node.isLeaf() || n == b.tree.root || tris[n] > kSmallSubtreeTriangles) continue;
+        ++folded;
+        // Shown by a leaf group (no tile of its own) under a tile of an ancestor.
+        const int t = layout.tileOfNode[n];
+        ASSERT_GE(t, 0);
+        EXPECT_EQ(layout.tiles[static_cast<std::size_t>(t)].node, kNoId);
+        const int parentTile = layout.tiles[static_cast<std::size_t>(t)].parent;
+        ASSERT_GE(parentTile, 0);
+        const Id owner = layout.tiles[static_cast<std::size_t>(parentTile)].node;
+        EXPECT_GT(tris[owner], kSmallSubtreeTriangles);
+    }
+    EXPECT_GE(folded, 4u) << "the fence should make several small clusters";
+    std::size_t postsSeen = 0;
+    for (const TilePlan& t : layout.tiles) {
+        EXPECT_TRUE(t.node == kNoId || t.node == b.tree.root ||
+                    tris[t.node] > kSmallSubtreeTriangles);
+        if (t.node != kNoId || t.content < 0) continue;
+        const ContentPlan& c = layout.contents[static_cast<std::size_t>(t.content)];
+        for (const LeafSlot& slot : c.leaves)
+            if (b.scene.instances[slot.instance].mesh == post) {
+                ++postsSeen;
+                EXPECT_TRUE(slot.merged); // 12 triangles: merged, not instanced
+            }
+    }
+    EXPECT_EQ(postsSeen, 64u); // every post in exactly one group
+    // One group per tile that shows posts: the posts under a node share one content.
+    std::set<int> groupParents;
+    std::size_t groupsWithPosts = 0;
+    for (const TilePlan& t : layout.tiles) {
+        if (t.node != kNoId || t.content < 0) continue;
+        const ContentPlan& c = layout.contents[static_cast<std::size_t>(t.content)];
+        if (std::any_of(c.leaves.begin(), c.leaves.end(), [&](const LeafSlot& s) {
+                return b.scene.instances[s.instance].mesh == post;
+            })) {
+            ++groupsWithPosts;
+            groupParents.insert(t.parent);
+        }
+    }
+    EXPECT_EQ(groupsWithPosts, groupParents.size());
+    EXPECT_LT(groupsWithPosts, folded);
+}
