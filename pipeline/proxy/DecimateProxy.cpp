@@ -15,11 +15,15 @@ namespace hlod {
 
 namespace {
 
-// The simplified triangles of the parts CoveredParts.h keeps.
+// The simplified triangles of the parts CoveredParts.h keeps. `copies` are the input vertices
+// that the simplified vertices past the input's copy (BoundedSimplify.h).
 std::vector<std::uint32_t> dropCoveredParts(const ProxyMesh& input,
                                             std::span<const glm::vec3> simplifiedPositions,
-                                            std::vector<std::uint32_t> simplified, double limit) {
+                                            std::vector<std::uint32_t> simplified,
+                                            std::span<const std::uint32_t> copies, double limit) {
     std::vector<std::uint32_t> part = componentRoots(input);
+    for (std::uint32_t v : copies)
+        part.push_back(part[v]); // a copy belongs to its vertex's part
     std::vector<std::uint32_t> number(part.size(), 0xffffffffu);
     std::size_t parts = 0;
     for (std::uint32_t v : input.indices) {
@@ -66,9 +70,11 @@ ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions&
     const double limit = maxError * (1.0 - std::sqrt(3.0) * wf);
     BoundedSimplifyResult simplified =
         simplifyWithinDeviation(input.positions, input.indices, limit);
-    input.indices =
-        dropCoveredParts(input, simplified.positions, std::move(simplified.indices), limit);
+    input.indices = dropCoveredParts(input, simplified.positions, std::move(simplified.indices),
+                                     simplified.copies, limit);
     input.positions = std::move(simplified.positions);
+    for (std::uint32_t v : simplified.copies)
+        input.colors.push_back(input.colors[v]);
     compactMesh(input);
     finishProxy(input);
     return input;

@@ -29,7 +29,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 7;
+constexpr std::uint64_t kBakeFormatVersion = 9;
 
 // Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
 std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {

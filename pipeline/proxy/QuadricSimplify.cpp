@@ -104,6 +104,11 @@ public:
                             static_cast<float>(deviationLimit) * (1.0f - surface::kSlackFraction));
             coverage_ = std::make_unique<surface::Coverage>(
                 original_, static_cast<float>(deviationLimit) * surface::kSlackFraction);
+            // A vertex at its input position lies on the input triangles it is a corner of.
+            nearOf_.assign(positions.size(), surface::kNoTriangle);
+            for (std::size_t i = 0; i < indices.size(); ++i)
+                if (nearOf_[indices[i]] == surface::kNoTriangle)
+                    nearOf_[indices[i]] = static_cast<std::uint32_t>(i / 3);
             makeSamples();
         }
     }
@@ -112,7 +117,6 @@ public:
         const double limit = maxError * maxError;
         changed_.assign(pos_.size(), 0);
         for (int pass = 0; pass < kMaxPasses; ++pass) {
-            pass_ = pass + 1;
             if (pass > 0) {
                 buildAdjacency();
                 buildEdges();
@@ -343,12 +347,12 @@ private:
         for (const Candidate& c : candidates) {
             if (c.cost > goal && done * 12 > candidates.size()) break;
             if (touched_[c.from] || touched_[c.to]) continue;
-            // The tests are pure until staysWithinLimit (its queries carry state, the surface's
-            // hint): the cheapest first.
+            // The cheapest tests first. In bounded mode every failure is remembered: the
+            // collapses left in the late passes are mostly ones that failed before.
             if (bounded_ && failedBefore(c)) continue;
-            if (!linkConditionHolds(c.from, c.to) || flipsAFace(c)) continue;
-            if (bounded_ && !staysWithinLimit(c)) {
-                failed_[key(c)] = pass_;
+            if (!linkConditionHolds(c.from, c.to) || flipsAFace(c) ||
+                (bounded_ && !staysWithinLimit(c))) {
+                if (bounded_) failed_[key(c)] = stamp_;
                 continue;
             }
             collapse(c);
@@ -357,8 +361,11 @@ private:
         return done;
     }
 
-    // Bounded mode: a collapse that failed the limit fails again until a face around either
-    // end changes (every such change marks both ends, see collapse()).
+    // Bounded mode: a collapse that failed (the link condition, a flip or the limit) fails
+    // again until a face around either end changes: every such change marks both ends with
+    // the collapse's stamp (see collapse()), and the tests read nothing else (the link of
+    // both ends, the positions of their faces' corners, and the candidate's end point, made
+    // from the quadrics and positions of its ends).
     static std::uint64_t key(const Candidate& c) {
         return (static_cast<std::uint64_t>(c.from) << 32) | c.to;
     }
@@ -439,6 +446,7 @@ private:
     }
 
     void collapse(const Candidate& c) {
+        ++stamp_;
         for (std::uint32_t end : {c.from, c.to}) {
             for (std::uint32_t t : trianglesOf(end)) {
                 std::uint32_t* k = &tris_[3 * t];
@@ -455,10 +463,11 @@ private:
             for (std::uint32_t t : trianglesOf(end))
                 if (tris_[3 * t] != kDead)
                     for (int i = 0; i < 3; ++i)
-                        changed_[tris_[3 * t + i]] = pass_;
-        changed_[c.from] = changed_[c.to] = pass_;
+                        changed_[tris_[3 * t + i]] = stamp_;
+        changed_[c.from] = changed_[c.to] = stamp_;
         quadrics_[c.to].add(quadrics_[c.from]);
         pos_[c.to] = c.at;
+        if (bounded_) nearOf_[c.to] = atNear_; // located at c.at by staysWithinLimit
         rep_[c.from] = c.to;
         if (bounded_) {
             for (std::uint32_t end : {c.from, c.to})
@@ -518,6 +527,27 @@ private:
         }
     }
 
+    // Places the pending samples [first, last) that lie within the limit of ring face `i`;
+    // the others go to unplaced_.
+    void placeBlock(const surface::Triangle& face, std::uint32_t i, std::uint32_t first,
+                    std::uint32_t last) {
+        for (std::uint32_t j = first; j < last; j += 4) {
+            const std::uint32_t n = std::min<std::uint32_t>(4, last - j);
+            surface::Points4 block;
+            for (std::uint32_t k = 0; k < 4; ++k) {
+                const glm::vec3& q = samples_[pending_[j + std::min(k, n - 1)]];
+                block.x[k] = q.x, block.y[k] = q.y, block.z[k] = q.z;
+            }
+            const unsigned inside = surface::withinMask4(face, block, limit2_);
+            for (std::uint32_t k = 0; k < n; ++k) {
+                if (inside & (1u << k))
+                    placedIn_[j + k] = i;
+                else
+                    unplaced_.push_back(j + k);
+            }
+        }
+    }
+
     void addSample(const glm::vec3& at, std::size_t t) {
         owned_[t].push_back(static_cast<std::uint32_t>(samples_.size()));
         samples_.push_back(at);
@@ -530,27 +560,47 @@ private:
     bool staysWithinLimit(const Candidate& c) {
         ring_.clear();
         ringSlot_.clear();
+        ringCorners_.clear();
         forEachReshaped(c, [&](std::uint32_t t, const glm::dvec3* q) {
-            ring_.push_back(surface::makeTriangle(glm::vec3(q[0]), glm::vec3(q[1]), glm::vec3(q[2])));
+            ring_.push_back(
+                surface::makeTriangle(glm::vec3(q[0]), glm::vec3(q[1]), glm::vec3(q[2])));
             ringSlot_.push_back(t);
+            // Corners by vertex after the collapse (c.from's becomes c.to's, at c.at).
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = tris_[3 * t + k];
+                ringCorners_.push_back(v == c.from ? c.to : v);
+            }
         });
 
-        // Each sample goes to the first reshaped face (in ring order) it lies within the limit
-        // of: run face by face over the samples still unplaced, four at a time.
+        // Each sample stays with its face when the face's new shape holds it (most do: a
+        // collapse moves one corner), else goes to the first reshaped face (in ring order) it
+        // lies within the limit of: run face by face over the samples still unplaced, four at
+        // a time. The faces come in ring order (as forEachReshaped visits them), so the n-th
+        // face that survives is ring face n.
         pending_.clear();
+        placedIn_.clear();
+        unplaced_.clear();
+        std::uint32_t home = 0;
         for (std::uint32_t end : {c.from, c.to}) {
             for (std::uint32_t t : trianglesOf(end)) {
                 const std::uint32_t* k = &tris_[3 * t];
                 if (k[0] == kDead) continue;
+                const bool hasFrom = k[0] == c.from || k[1] == c.from || k[2] == c.from;
+                const bool hasTo = k[0] == c.to || k[1] == c.to || k[2] == c.to;
                 // A face of c.to that holds c.from too was seen from c.from.
-                if (end == c.to && (k[0] == c.from || k[1] == c.from || k[2] == c.from)) continue;
+                if (end == c.to && hasFrom) continue;
+                const auto first = static_cast<std::uint32_t>(pending_.size());
                 pending_.insert(pending_.end(), owned_[t].begin(), owned_[t].end());
+                placedIn_.resize(pending_.size(), 0);
+                if (hasFrom && hasTo) { // dies with the edge
+                    for (std::uint32_t j = first; j < pending_.size(); ++j)
+                        unplaced_.push_back(j);
+                    continue;
+                }
+                placeBlock(ring_[home], home, first, static_cast<std::uint32_t>(pending_.size()));
+                ++home;
             }
         }
-        placedIn_.assign(pending_.size(), 0);
-        unplaced_.resize(pending_.size());
-        for (std::uint32_t j = 0; j < pending_.size(); ++j)
-            unplaced_[j] = j;
         for (std::uint32_t i = 0; i < ring_.size() && !unplaced_.empty(); ++i) {
             std::size_t kept = 0;
             for (std::size_t j = 0; j < unplaced_.size(); j += 4) {
@@ -575,20 +625,27 @@ private:
         moves_.clear();
         for (std::size_t j = 0; j < pending_.size(); ++j)
             moves_.emplace_back(pending_[j], ringSlot_[placedIn_[j]]);
-        // The reshaped faces within the limit of the input: sampled here (corners, edge
-        // midpoints, centroid: quick, and most failing collapses fail above), certified by the
-        // caller's final check (BoundedSimplify.h).
-        for (const surface::Triangle& tri : ring_) {
-            points_.clear();
-            forEachSample(tri.a, tri.b, tri.c, [&](const glm::vec3& point) { points_.push_back(point); });
-            if (!original_.nearEach(points_)) return false;
-        }
-        // Then certified (SurfaceQuery.h Coverage), so that the caller's check rarely fails.
-        // Then certified (SurfaceQuery.h Coverage): every face the result holds was either left
-        // as it was in the input or certified when it took its last shape.
+        // The reshaped faces within the limit of the input, certified (SurfaceQuery.h
+        // Coverage): every face the result holds was either left as it was in the input or
+        // certified when it took its last shape. Corners that did not move keep the input
+        // triangle found near them (nearOf_); the moved one is located once for the ring.
         glm::vec3 failAt;
-        for (const surface::Triangle& tri : ring_)
-            if (!coverage_->covers(tri.a, tri.b, tri.c, {}, failAt)) return false;
+        atNear_ = surface::kNoTriangle;
+        for (std::size_t i = 0; i < ring_.size(); ++i) {
+            const surface::Triangle& tri = ring_[i];
+            const glm::vec3 corner[3] = {tri.a, tri.b, tri.c};
+            std::uint32_t near[3];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = ringCorners_[3 * i + k];
+                near[k] = v == c.to ? atNear_ : nearOf_[v];
+            }
+            const bool covered = coverage_->covers(corner, near, failAt);
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = ringCorners_[3 * i + k];
+                (v == c.to ? atNear_ : nearOf_[v]) = near[k];
+            }
+            if (!covered) return false;
+        }
         return true;
     }
 
@@ -611,13 +668,16 @@ private:
     std::vector<glm::vec3> samples_;
     std::vector<std::vector<std::uint32_t>> owned_; // per triangle slot: its samples
     std::vector<surface::Triangle> ring_;
-    std::vector<std::uint32_t> ringSlot_;
+    std::vector<std::uint32_t> ringSlot_, ringCorners_;
+    // Per vertex: an input triangle within the limit of its current position (kNoTriangle:
+    // not known yet); atNear_ the one found for the moving vertex's new position.
+    std::vector<std::uint32_t> nearOf_;
+    std::uint32_t atNear_ = surface::kNoTriangle;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> moves_; // (sample, slot)
     std::vector<std::uint32_t> pending_, placedIn_, unplaced_;   // scratch of staysWithinLimit
-    std::vector<glm::vec3> points_;
-    int pass_ = 0;
-    std::vector<int> changed_;                      // per vertex: pass of its last change
-    std::unordered_map<std::uint64_t, int> failed_; // collapse -> pass it failed in
+    std::uint32_t stamp_ = 0;                                    // collapses made so far
+    std::vector<std::uint32_t> changed_; // per vertex: stamp of its last change
+    std::unordered_map<std::uint64_t, std::uint32_t> failed_; // collapse -> stamp it failed at
 };
 
 } // namespace

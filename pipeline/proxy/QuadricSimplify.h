@@ -31,10 +31,13 @@
 // the input both ways: the reshaped faces are certified to lie within it of the input surface
 // (SurfaceQuery.h Coverage), and sample points of the input (every vertex, and the centroids
 // of a subdivision of each triangle at about the limit's spacing, at most 6 x 6) each stay
-// within it of a face; each face owns the samples nearest to it, a collapse re-homes the
-// samples of the faces it changes onto the faces around the kept vertex (Hausdorff tracking as
-// in OpenMesh's ModHausdorffT). Only the sampling of the second direction is not a proof:
-// callers certify the result (BoundedSimplify.h).
+// within it of a face; each face owns samples within the limit of it, a collapse re-homes the
+// samples of the faces it changes onto the faces around the kept vertex, a face's new shape
+// first (Hausdorff tracking as in OpenMesh's ModHausdorffT). Only the sampling of the second
+// direction is not a proof: callers certify the result (BoundedSimplify.h).
+// Cost: the certificates dominate. Each vertex keeps an input triangle found within the limit
+// of it until it moves, so a ring's corners are located once, not once per face; a collapse
+// that failed any test is not tried again until a face around either end changes.
 //
 // Error: a collapse u -> v costs the accumulated quadric of u at v, divided by its weight (an
 // area-weighted mean squared distance to u's planes, as meshoptimizer measures); collapses

@@ -593,6 +593,21 @@ public:
         return piece(ca, cb, cc, 0, failAt);
     }
 
+    // The same, given for each corner a surface triangle within the limit of it (`near[k]`,
+    // kNoTriangle when unknown: it is located then and written back). Callers that certify
+    // many triangles over the same vertices keep these per vertex (valid until it moves), so
+    // a corner is located once, not once per triangle it belongs to.
+    bool covers(const glm::vec3 (&p)[3], std::uint32_t (&near)[3], glm::vec3& failAt) {
+        Corner corner[3];
+        for (int k = 0; k < 3; ++k) {
+            corner[k] = Corner{p[k], near[k]};
+            if (!locate(corner[k], failAt)) return false;
+            near[k] = corner[k].near;
+        }
+        budget_ = kPieceBudget;
+        return piece(corner[0], corner[1], corner[2], 0, failAt);
+    }
+
 private:
     static constexpr int kMaxDepth = 48;
     static constexpr int kPieceBudget = 1 << 14;

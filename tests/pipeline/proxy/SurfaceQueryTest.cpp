@@ -162,3 +162,32 @@ TEST(SurfaceQuery, GridQueriesAnswerAsEveryTriangle) {
         ASSERT_EQ(common, surface.nearAll(p, q, r)) << i;
     }
 }
+
+TEST(SurfaceQuery, CoverageWithKnownCornersLocatesOnlyTheUnknownOnes) {
+    // A 2 x 1 strip of two triangles in z = 0; the limit 0.1 (queries at 31/32 of it).
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {2, 0, 0},
+                                           {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+    const std::vector<std::uint32_t> indices{0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+    const float limit = 0.1f;
+    NearSurface surface;
+    surface.reset(positions, indices, limit * (1.0f - kSlackFraction));
+    Coverage coverage(surface, limit * kSlackFraction);
+    glm::vec3 failAt;
+    // 5 cm above the strip, spanning both halves: covered. The first corner comes with a
+    // triangle it lies above (kept as given); the others are located and written back, each
+    // one within the limit of its corner.
+    const glm::vec3 above[3] = {{0.1f, 0.1f, 0.05f}, {1.9f, 0.2f, 0.05f}, {1.0f, 0.9f, 0.05f}};
+    std::uint32_t near[3] = {1, kNoTriangle, kNoTriangle};
+    EXPECT_TRUE(coverage.covers(above, near, failAt));
+    EXPECT_EQ(near[0], 1u);
+    for (int k = 0; k < 3; ++k) {
+        ASSERT_NE(near[k], kNoTriangle) << k;
+        EXPECT_TRUE(surface.nearTriangle(near[k], above[k])) << k;
+    }
+    // 20 cm above: the first corner is already too far, so nothing is covered and the point
+    // that failed is that corner.
+    const glm::vec3 high[3] = {{0.5f, 0.5f, 0.2f}, {1.5f, 0.5f, 0.05f}, {1.0f, 0.9f, 0.05f}};
+    std::uint32_t unknown[3] = {kNoTriangle, kNoTriangle, kNoTriangle};
+    EXPECT_FALSE(coverage.covers(high, unknown, failAt));
+    EXPECT_EQ(failAt, high[0]);
+}
