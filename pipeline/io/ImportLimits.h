@@ -10,7 +10,7 @@
 //  - instancing DAGs: a COLLADA <node> or STEP sub-assembly placed twice at each of 30 levels
 //    is 2^30 placements (assimp and XCAF expand them into a tree of nodes);
 //  - declared counts: a PLY/OFF/STL header or a glTF accessor declaring billions of elements;
-//  - shared data: thousands of glTF primitives reading the same accessors, each one copied;
+//  - shared data: thousands of glTF primitives reading the same accessors;
 //  - images: a PNG of 60000 x 60000 texels (deflate packs ~1000 zero texels a byte), or many
 //    distinct large images in one file.
 #pragma once
@@ -27,10 +27,11 @@ struct ImportLimits {
     // STL's triangles), checked before allocating. 50 M vertices of position + normal + uv is
     // ~1.6 GB in memory: beyond any single mesh the pipeline bakes in reasonable time.
     std::size_t maxElements = 50'000'000;
-    // Triangles stored in the file's meshes (each counted once however often it is placed):
-    // ~40 bytes each held in memory (indices + their share of vertices), so 100 M is ~4 GB,
-    // half the isolated readers' 8 GB address-space limit. `--max-unique-triangles`.
-    std::uint64_t maxUniqueTriangles = 100'000'000;
+    // Triangles stored in the file's meshes (each counted once however often it is placed).
+    // Held as 12 bytes of indices plus their vertices (positions, normals, uvs: 32+ bytes
+    // each): ~30 bytes a triangle for indexed meshes, ~85 for triangle soups (measured: 100 M
+    // non-indexed glTF triangles peaked at 8.3 GB), so 50 M is 1.5-4 GB. `--max-unique-triangles`.
+    std::uint64_t maxUniqueTriangles = 50'000'000;
     // Placed meshes (and scene nodes) after expanding every level of instancing. Measured on
     // a COLLADA file expanded by assimp: ~1.6 KB of peak memory per node (assimp's aiNode
     // carries a fixed 1 KB name buffer; ours holds two double matrices and is sent back from
@@ -46,9 +47,10 @@ struct ImportLimits {
     // Texels of one decoded image: 8192 x 8192 (256 MB as RGBA; stb_image holds about twice
     // that while decoding). Larger images are not decoded.
     std::uint64_t maxImageTexels = 64ull << 20;
-    // Texels of all images decoded for one file: 1 Gi texels is 4 GB of RGBA (sixty-four
-    // 4096 x 4096 textures). Images beyond it are not decoded. `--max-texels`.
-    std::uint64_t maxTexels = 1ull << 30;
+    // Texels of all images decoded for one file: 512 Mi texels is 2 GB of RGBA (32 textures of
+    // 4096 x 4096, 128 of 2048 x 2048; measured: ten 8192 x 8192 PNGs, 2.6 MB of files, took
+    // 3 GB and 9 s to decode). Images beyond it are not decoded. `--max-texels`.
+    std::uint64_t maxTexels = 512ull << 20;
 };
 
 // Throws Error(TooLarge) naming `file`: "<what>, over the import limit of <limit> (<flag> raises
