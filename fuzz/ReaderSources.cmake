@@ -12,8 +12,10 @@ set(HLOD_READER_SOURCES
   io/CadBudget.cpp
   io/CadCrashGuard.cpp
   io/CadImporter.cpp
+  io/CadProgress.cpp
   io/CadTessellation.cpp
   io/CadXcaf.cpp
+  io/DaeInstancing.cpp
   io/GlbMeshopt.cpp
   io/GlbWriter.cpp
   io/GltfAccessor.cpp
@@ -22,10 +24,13 @@ set(HLOD_READER_SOURCES
   io/GltfTrs.cpp
   io/ImageDecode.cpp
   io/Import.cpp
+  io/ImportLimits.cpp
+  io/InstancingGraph.cpp
   io/IsolatedImport.cpp
   io/Precheck.cpp
   io/SampleScene.cpp
   io/SgiImage.cpp
+  io/StepInstancing.cpp
   io/ThirdPartyImpl.cpp
   io/Validate.cpp
   proxy/ContentHash.cpp

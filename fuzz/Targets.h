@@ -87,7 +87,10 @@ inline void gltf(const std::uint8_t* data, std::size_t size) {
     const bool json = size > 0 && data[0] == '{';
     const auto file = writeInput(json ? "in.gltf" : "in.glb", data, size);
     ImportOptions options;
-    options.maxElements = 1'000'000; // keeps single runs fast; the refusal path is what counts
+    // Small limits keep single runs fast; the refusal paths are what counts.
+    options.limits.maxElements = 1'000'000;
+    options.limits.maxUniqueTriangles = 1'000'000;
+    options.limits.maxTexels = 16u << 20;
     expectOnlyHlodErrors([&] { (void)importGltf(file, options); });
 }
 

@@ -23,8 +23,9 @@ std::vector<CommandSpec> makeCommands() {
                  runInfo,
                  {"hlod info [SCENE|DIR|PACKAGE...] [options]"},
                  "Counts of a scene: nodes, unique meshes, instances, draw calls, triangles, "
-                 "vertices, materials, depth, bounds in metres and the file size, and a note for "
-                 "each CAD face the tessellation budget coarsened. Given an exported package "
+                 "vertices, materials, depth, bounds in metres and the file size, a note for "
+                 "each CAD face the tessellation budget coarsened, and the import limits it "
+                 "loaded under (--max-* options). Given an exported package "
                  "folder, reads it back (tree, proxy triangles, originals).",
                  {scene, {"PACKAGE", "A folder written by hlod build (tileset.json, hlod.json)."}},
                  {N::Import},

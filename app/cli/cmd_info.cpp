@@ -1,5 +1,5 @@
-// `hlod info [SCENE...] [--json] [--deflection R] [--brep-unit M]`: counts, bounds and file size of
-// a scene.
+// `hlod info [SCENE...] [--json] [--deflection R] [--brep-unit M] [--max-triangles N ...]`:
+// counts, bounds and file size of a scene, what the importers noted, and the import limits.
 #include <cstdio>
 #include <iostream>
 
@@ -22,7 +22,7 @@ std::string nodePath(const Scene& s, Id node) {
     return path.empty() ? "/" : path;
 }
 
-nlohmann::json toJson(const LoadedScene& loaded) {
+nlohmann::json toJson(const LoadedScene& loaded, const ImportLimits& limits) {
     const Scene& s = loaded.scene;
     const SceneStats st = s.stats();
     const Aabb b = s.worldBounds();
@@ -65,6 +65,12 @@ nlohmann::json toJson(const LoadedScene& loaded) {
     }
     j["textures"] = std::move(textures);
     j["import_notes"] = s.importNotes;
+    j["import_limits"] = {{"max_triangles", limits.maxTriangles},
+                          {"max_unique_triangles", limits.maxUniqueTriangles},
+                          {"max_instances", limits.maxInstances},
+                          {"max_texels", limits.maxTexels},
+                          {"max_image_texels", limits.maxImageTexels},
+                          {"max_elements", limits.maxElements}};
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
         const DiskFootprint disk = filesFootprint({p.dir});
@@ -81,7 +87,7 @@ nlohmann::json toJson(const LoadedScene& loaded) {
     return j;
 }
 
-void printText(const LoadedScene& loaded) {
+void printText(const LoadedScene& loaded, const ImportLimits& limits) {
     const Scene& s = loaded.scene;
     const SceneStats st = s.stats();
     const Aabb b = s.worldBounds();
@@ -106,6 +112,12 @@ void printText(const LoadedScene& loaded) {
     // What the importers changed on the way in (a CAD face coarsened by the triangle budget).
     for (const std::string& note : s.importNotes)
         std::printf("note:       %s\n", note.c_str());
+    // The import budget the scene was loaded under (ImportLimits.h; --max-* flags raise it).
+    std::printf("limits:     %llu triangles (%llu unique), %llu instances, %llu texels\n",
+                static_cast<unsigned long long>(limits.maxTriangles),
+                static_cast<unsigned long long>(limits.maxUniqueTriangles),
+                static_cast<unsigned long long>(limits.maxInstances),
+                static_cast<unsigned long long>(limits.maxTexels));
     if (loaded.package) {
         const PackageInfo& p = *loaded.package;
         std::printf("package:    %zu tree nodes (%zu leaves, height %d, %s), %zu proxy triangles\n",
@@ -121,15 +133,16 @@ void printText(const LoadedScene& loaded) {
 
 int runInfo(const CommandArgs& argv) {
     const Args args(argv, command("info"));
-    const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
+    const ImportOptions options = importOptionsFromArgs(args);
+    const LoadedScene loaded = loadSceneArgs(args.positionals(), options);
     // Unreadable textures are not fatal (the material keeps its colour), but they are named.
     for (const Texture& t : loaded.scene.textures) {
         if (!t.error.empty()) std::fprintf(stderr, "hlod info: warning: %s\n", t.error.c_str());
     }
     if (args.has("--json")) {
-        std::cout << toJson(loaded).dump(2) << "\n";
+        std::cout << toJson(loaded, options.limits).dump(2) << "\n";
     } else {
-        printText(loaded);
+        printText(loaded, options.limits);
     }
     return 0;
 }

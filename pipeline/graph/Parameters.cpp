@@ -3,7 +3,9 @@
 // clusterer's constraints), so the CLI, the panel and the project file agree.
 #include "pipeline/graph/Parameters.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -46,6 +48,37 @@ ParamDecl choices(ParamDecl d, std::vector<std::string> c) {
 using T = ParamType;
 using N = NodeKind;
 
+// The import budget (ImportLimits.h, where each default is explained): what one scene file
+// may expand into before it is refused (textures: left undecoded).
+void addImportLimits(std::vector<ParamDecl>& v) {
+    const ImportLimits l;
+    constexpr double kIntMax = 2147483647.0;
+    const auto count = [](std::uint64_t n) { return static_cast<int>(n); };
+    v.push_back(ranged(decl("max_triangles", "Max triangles", T::Int, N::Import,
+                            count(l.maxTriangles), "",
+                            "Import limit: triangles of all placed meshes (as `hlod info` counts "
+                            "them); a file over it is refused",
+                            "--max-triangles"),
+                       1, kIntMax));
+    v.push_back(ranged(decl("max_unique_triangles", "Max unique triangles", T::Int, N::Import,
+                            count(l.maxUniqueTriangles), "",
+                            "Import limit: triangles the file's meshes hold, each mesh counted "
+                            "once; a file over it is refused",
+                            "--max-unique-triangles"),
+                       1, kIntMax));
+    v.push_back(ranged(decl("max_instances", "Max instances", T::Int, N::Import,
+                            count(l.maxInstances), "",
+                            "Import limit: placed meshes (and nodes) once every level of "
+                            "instancing is expanded; a file over it is refused",
+                            "--max-instances"),
+                       1, kIntMax));
+    v.push_back(ranged(decl("max_texels", "Max texels", T::Int, N::Import, count(l.maxTexels), "",
+                            "Import limit: texels of all decoded textures of a file; images "
+                            "past it are not decoded (their materials keep their colour)",
+                            "--max-texels"),
+                       1, kIntMax));
+}
+
 void addImportAndCluster(std::vector<ParamDecl>& v) {
     const ImportOptions io;
     const ClusterParams cp;
@@ -61,6 +94,7 @@ void addImportAndCluster(std::vector<ParamDecl>& v) {
                     "millimetres)",
                     "--brep-unit"),
                1e-9, 1e3));
+    addImportLimits(v);
     v.push_back(choices(decl("volume", "Volume", T::Enum, N::Cluster, std::string("sphere"), "",
                              "Clustering volume: bounding spheres (Sappa & Garcia), AABBs with "
                              "the proportion constraint k, loose octree, or the original "
@@ -438,6 +472,10 @@ ImportOptions importOptionsFrom(const ParamValues& v) {
     ImportOptions o;
     o.cadRelativeDeflection = paramNumber(v, "deflection");
     o.cadBrepUnitMetres = paramNumber(v, "brep_unit");
+    o.limits.maxTriangles = static_cast<std::uint64_t>(paramInt(v, "max_triangles"));
+    o.limits.maxUniqueTriangles = static_cast<std::uint64_t>(paramInt(v, "max_unique_triangles"));
+    o.limits.maxInstances = static_cast<std::uint64_t>(paramInt(v, "max_instances"));
+    o.limits.maxTexels = static_cast<std::uint64_t>(paramInt(v, "max_texels"));
     return o;
 }
 
@@ -471,6 +509,13 @@ ParamValues paramsFrom(const ImportOptions& o) {
     ParamValues v = defaultValues(NodeKind::Import);
     v["deflection"] = o.cadRelativeDeflection;
     v["brep_unit"] = o.cadBrepUnitMetres;
+    const auto count = [](std::uint64_t n) {
+        return static_cast<int>(std::min<std::uint64_t>(n, 2147483647u));
+    };
+    v["max_triangles"] = count(o.limits.maxTriangles);
+    v["max_unique_triangles"] = count(o.limits.maxUniqueTriangles);
+    v["max_instances"] = count(o.limits.maxInstances);
+    v["max_texels"] = count(o.limits.maxTexels);
     return v;
 }
 

@@ -64,13 +64,18 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 }
 
 // An embedded assimp texture: compressed bytes (PNG, JPEG...; mHeight 0) or raw BGRA texels.
-Texture embeddedTexture(const aiTexture* tex, const std::string& name) {
+Texture embeddedTexture(const aiTexture* tex, const std::string& name, TexelBudget& budget) {
     if (tex->mHeight == 0) {
         return textureFromBytes(
-            {reinterpret_cast<const std::uint8_t*>(tex->pcData), tex->mWidth}, name);
+            {reinterpret_cast<const std::uint8_t*>(tex->pcData), tex->mWidth}, name, &budget);
     }
     Texture t;
     t.name = name;
+    std::string why;
+    if (!budget.charge(tex->mWidth, tex->mHeight, why)) {
+        t.error = name + ": " + why;
+        return t;
+    }
     auto image = std::make_shared<RgbaImage>(static_cast<int>(tex->mWidth),
                                              static_cast<int>(tex->mHeight));
     const std::size_t n = static_cast<std::size_t>(tex->mWidth) * tex->mHeight;
@@ -97,8 +102,8 @@ void chooseAlphaMode(Material& mat, bool translucentTexels) {
 
 class MaterialReader {
 public:
-    MaterialReader(const aiScene* s, fs::path folder, Scene& scene)
-        : scene_(s), folder_(std::move(folder)), out_(scene) {}
+    MaterialReader(const aiScene* s, fs::path folder, Scene& scene, const ImportLimits& limits)
+        : scene_(s), folder_(std::move(folder)), out_(scene), texels_(limits) {}
 
     // `firstTexture`: the texture the source file names first for this material's object,
     // when the format's loader kept another one (AC3D, see Ac3dTextures.h); empty otherwise.
@@ -131,7 +136,7 @@ private:
         if (ref.empty()) return;
         mat.hasTexture = true;
         if (const aiTexture* tex = scene_->GetEmbeddedTexture(ref.c_str())) {
-            useTexture(ref, mat, [&] { return embeddedTexture(tex, ref); });
+            useTexture(ref, mat, [&] { return embeddedTexture(tex, ref, texels_); });
             return;
         }
         std::string rel = ref;
@@ -143,7 +148,7 @@ private:
         // the material keeps its base colour.
         if (!isInsideFolder(p, folder_)) return;
         mat.baseColorTexture = p;
-        useTexture(p.string(), mat, [&] { return loadTexture(p); });
+        useTexture(p.string(), mat, [&] { return loadTexture(p, &texels_); });
     }
 
     // One Texture per distinct reference, decoded once; its mean colour and whether it has
@@ -167,6 +172,7 @@ private:
     Scene& out_;
     std::map<std::string, std::pair<Id, glm::vec4>> cache_;
     std::map<Id, bool> translucent_;
+    TexelBudget texels_;
 };
 
 // For AC3D files: per assimp material, the first texture its object names (see
@@ -232,13 +238,20 @@ Mesh convertMesh(const aiMesh* am) {
     return mesh;
 }
 
-void importNodes(const aiScene* as, const std::vector<Id>& meshIds, Scene& scene) {
+// A node graph with more nodes than placements allowed is refused, not cut short: it is
+// either a format's own instancing expanded by its loader or a graph that loops.
+void importNodes(const aiScene* as, const std::vector<Id>& meshIds, Scene& scene,
+                 const fs::path& file, const ImportLimits& limits) {
     std::vector<std::pair<const aiNode*, Id>> stack{{as->mRootNode, 0}};
-    std::size_t guard = 0;
+    std::uint64_t count = 0;
     while (!stack.empty()) {
         auto [an, parent] = stack.back();
         stack.pop_back();
-        if (++guard > 50'000'000) break; // malformed graphs cannot loop forever
+        if (++count > limits.maxInstances) {
+            throwOverLimit(file, "its node graph holds more than " + std::to_string(count - 1) +
+                                     " nodes",
+                           limits.maxInstances, "--max-instances");
+        }
         const std::string name = an->mName.length ? an->mName.C_Str() : "node";
         const Id id = scene.addNode(name, parent, toGlm(an->mTransformation));
         for (unsigned i = 0; an->mMeshes && i < an->mNumMeshes; ++i) {
@@ -284,7 +297,7 @@ void checkRawScene(const aiScene* as, const fs::path& file) {
 } // namespace
 
 Scene importAssimp(const fs::path& file, const ImportOptions& options) {
-    precheckElementCounts(file, options.maxElements);
+    precheckElementCounts(file, options.limits);
     const fs::path folder = fs::absolute(file).parent_path();
     Assimp::Importer importer;
     auto* io = new FolderIOSystem(folder); // owned by the importer
@@ -321,7 +334,7 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
     for (const fs::path& f : io->opened()) {
         if (f != fs::absolute(file).lexically_normal()) scene.referencedFiles.push_back(f);
     }
-    MaterialReader materials(as, folder, scene);
+    MaterialReader materials(as, folder, scene, options.limits);
     const std::vector<std::string> firstTextures = firstTexturesOfMaterials(as, file);
     std::vector<Id> materialIds;
     for (unsigned i = 0; i < as->mNumMaterials; ++i) {
@@ -335,7 +348,7 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
         mesh.material = mat < materialIds.size() ? materialIds[mat] : 0;
         meshIds[i] = scene.addMesh(std::move(mesh));
     }
-    importNodes(as, meshIds, scene);
+    importNodes(as, meshIds, scene, file, options.limits);
     validateScene(scene, file);
     return scene;
 }

@@ -3,6 +3,7 @@
 // BRepMesh_IncrementalMesh on a single face; a stored triangulation whose parameters carry the
 // requested deflection is reused, not remeshed). See CadBudget.h for the budget's derivation.
 #include "pipeline/io/CadBudget.h"
+#include "pipeline/io/CadProgress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <IMeshTools_Parameters.hxx>
+#include <Message_ProgressIndicator.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -121,13 +123,19 @@ std::string number(double v, const char* format = "%.3g") {
 
 // Meshes one face within `faceTriangles`; returns the triangles it got (0 on failure).
 int meshFace(const TopoDS_Face& face, double area, double faceTriangles,
-             const TessellationBudget& budget) {
+             const TessellationBudget& budget, FaceProgress* progress) {
     IMeshTools_Parameters params;
     params.Deflection = budget.linearDeflection;
     params.Angle = budget.angularDeflection;
     params.MinSize = std::sqrt(2.0 * area / faceTriangles);
     params.InParallel = false; // see tessellate(): faults are guarded on this thread only
-    BRepMesh_IncrementalMesh mesher(face, params);
+    // Only for its cancel flag: this single face's own counter is not the shape's.
+    Handle(Message_ProgressIndicator) indicator;
+    if (progress != nullptr) indicator = progress->indicator(false);
+    BRepMesh_IncrementalMesh mesher(face, params,
+                                    indicator.IsNull() ? Message_ProgressRange()
+                                                       : indicator->Start());
+    if (progress != nullptr) progress->throwIfCancelled();
     TopLoc_Location loc;
     const Handle(Poly_Triangulation)& tri = BRep_Tool::Triangulation(face, loc);
     return tri.IsNull() ? 0 : tri->NbTriangles();
@@ -158,13 +166,16 @@ double estimatedTriangles(const TopoDS_Face& face) {
     }
 }
 
-void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, double unitScale) {
+void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, double unitScale,
+                    FaceProgress* progress) {
     if (!(budget.elementSize > 0.0)) return;
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(shape, TopAbs_FACE, faces);
     const int first = budget.facesSeen;
     budget.facesSeen += faces.Extent();
+    std::uint64_t meshed = 0;
     for (int i = 1; i <= faces.Extent(); ++i) {
+        if (progress != nullptr) progress->throwIfCancelled();
         const TopoDS_Face& face = TopoDS::Face(faces(i));
         try {
             TopLoc_Location loc;
@@ -178,8 +189,9 @@ void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, doubl
             const double remaining =
                 std::max(kMinFaceTriangles, budget.fileTriangles - budget.usedTriangles);
             const double allowed = std::min(own, remaining);
-            const int got = meshFace(face, area, allowed, budget);
+            const int got = meshFace(face, area, allowed, budget, progress);
             budget.usedTriangles += got;
+            if (progress != nullptr) progress->partDone(++meshed);
             const double deviation = meshDeviation(face);
             if (got > 0 && deviation > 2.0 * budget.linearDeflection) {
                 budget.notes.push_back(

@@ -36,6 +36,8 @@
 
 namespace hlod::cad {
 
+class FaceProgress;
+
 constexpr double kElementsPerDeflection = 5.0;
 constexpr double kMinFaceTriangles = 2000.0;
 
@@ -63,6 +65,9 @@ double estimatedTriangles(const TopoDS_Face& face);
 // exceed their budget; the caller's BRepMesh pass over the whole shape then keeps those
 // triangulations (they carry the requested deflection) and meshes the rest normally.
 // `unitScale` (metres per file unit) only serves the notes.
-void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, double unitScale);
+// With `progress`, each budgeted face counts as meshed when done, and a raised cancel flag
+// stops the meshing (Error(Cancelled)).
+void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, double unitScale,
+                    FaceProgress* progress = nullptr);
 
 } // namespace hlod::cad

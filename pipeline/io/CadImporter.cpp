@@ -48,6 +48,7 @@
 #include "pipeline/io/CadTessellation.h"
 #include "pipeline/io/CadXcaf.h"
 #include "pipeline/io/Import.h"
+#include "pipeline/io/StepInstancing.h"
 
 namespace hlod {
 
@@ -184,7 +185,10 @@ double documentUnitMetres(const Handle(TDocStd_Document) & doc) {
     return UnitsMethods::GetCasCadeLengthUnit(UnitsMethods_LengthUnit_Meter);
 }
 
-Scene importXcaf(const fs::path& file, CadKind kind, const ImportOptions& options) {
+Scene importXcaf(const fs::path& file, CadKind kind, const ImportOptions& options,
+                 const Progress& progress) {
+    // Before OCCT's transfer, which builds every expanded placement of the assembly.
+    if (kind == CadKind::Step) checkStepInstancing(file, options.limits);
     XcafDocument document;
     {
         // Outside the guarded call: a fault abandons its frames without unlocking/restoring.
@@ -194,8 +198,8 @@ Scene importXcaf(const fs::path& file, CadKind kind, const ImportOptions& option
     }
     Scene scene;
     cad::runGuarded([&] {
-        scene =
-            cad::sceneFromXcaf(document.get(), documentUnitMetres(document.get()), options, file);
+        scene = cad::sceneFromXcaf(document.get(), documentUnitMetres(document.get()), options,
+                                   file, progress);
     });
     return scene;
 }
@@ -240,7 +244,8 @@ TopoDS_Shape readBrep(const fs::path& file) {
 
 // One node and mesh per BREP item; items that are the same TShape placed at different
 // locations share one mesh (meshed in the item's own frame, placed by the node transform).
-Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOptions& options) {
+Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOptions& options,
+                const Progress& progress) {
     const std::vector<TopoDS_Shape> items = brepItems(shape);
     if (items.empty()) {
         throw Error(ErrorCode::NoGeometry, file, "the shape has no faces (curves or points only)");
@@ -254,7 +259,8 @@ Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOpt
     const double deflection = options.cadRelativeDeflection * diagonal;
     cad::TessellationBudget budget =
         cad::makeBudget(file, diagonal, deflection, options.cadAngularDeflection);
-    cad::tessellate(shape, deflection, options.cadAngularDeflection, &budget, scale);
+    cad::FaceProgress faces(progress, file, cad::faceCount(shape));
+    cad::tessellate(shape, deflection, options.cadAngularDeflection, &budget, scale, &faces);
     Scene scene;
     scene.importNotes = std::move(budget.notes);
     const std::string stem = file.stem().string();
@@ -272,11 +278,7 @@ Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOpt
             if (groups.empty()) continue; // nothing of this item tessellated
             groups.front().mesh.name = name;
             triangles += groups.front().mesh.triangleCount();
-            if (triangles > options.maxElements) {
-                throw Error(ErrorCode::TooLarge, file,
-                            "tessellation exceeds " + std::to_string(options.maxElements) +
-                                " triangles (raise the relative deflection)");
-            }
+            cad::checkTessellatedTriangles(triangles, options, file);
             it = shared.emplace(key, scene.addMesh(std::move(groups.front().mesh))).first;
         }
         const Id node = scene.addNode(name, 0, cad::toGlm(item.Location().Transformation(), scale));
@@ -288,10 +290,10 @@ Scene brepScene(const fs::path& file, const TopoDS_Shape& shape, const ImportOpt
     return scene;
 }
 
-Scene importBrep(const fs::path& file, const ImportOptions& options) {
+Scene importBrep(const fs::path& file, const ImportOptions& options, const Progress& progress) {
     const TopoDS_Shape shape = readBrep(file);
     Scene scene;
-    cad::runGuarded([&] { scene = brepScene(file, shape, options); });
+    cad::runGuarded([&] { scene = brepScene(file, shape, options, progress); });
     return scene;
 }
 
@@ -306,13 +308,14 @@ void checkOptions(const fs::path& file, const ImportOptions& options) {
 
 } // namespace
 
-Scene importCad(const fs::path& file, const ImportOptions& options) {
+Scene importCad(const fs::path& file, const ImportOptions& options, const Progress& progress) {
     checkOptions(file, options);
     silenceOcct();
     const CadKind kind = kindOf(file);
     Scene scene;
     try {
-        scene = kind == CadKind::Brep ? importBrep(file, options) : importXcaf(file, kind, options);
+        scene = kind == CadKind::Brep ? importBrep(file, options, progress)
+                                      : importXcaf(file, kind, options, progress);
     } catch (const Error&) {
         throw;
     } catch (const Standard_Failure& e) {

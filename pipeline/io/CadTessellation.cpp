@@ -13,6 +13,8 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <IMeshTools_Parameters.hxx>
+#include <Message_ProgressIndicator.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -134,16 +136,30 @@ void clearTriangulation(const TopoDS_Shape& shape) {
 }
 
 bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection,
-                TessellationBudget* budget, double unitScale) {
+                TessellationBudget* budget, double unitScale, FaceProgress* progress) {
+    if (progress != nullptr) progress->beginPart(faceCount(shape));
+    bool done = false;
     try {
-        if (budget != nullptr) meshDenseFaces(shape, *budget, unitScale);
+        if (budget != nullptr) meshDenseFaces(shape, *budget, unitScale, progress);
+        IMeshTools_Parameters params;
+        params.Deflection = linearDeflection;
+        params.Angle = angularDeflection;
         // On the calling thread, not BRepMesh's parallel mode: a fault inside OCCT can only be
         // turned into an error on the thread that runs the guarded call (CadCrashGuard.h).
-        BRepMesh_IncrementalMesh mesher(shape, linearDeflection, false, angularDeflection, false);
-        return mesher.IsDone();
+        params.InParallel = false;
+        Handle(Message_ProgressIndicator) indicator;
+        if (progress != nullptr) indicator = progress->indicator(true);
+        BRepMesh_IncrementalMesh mesher(
+            shape, params, indicator.IsNull() ? Message_ProgressRange() : indicator->Start());
+        done = mesher.IsDone();
     } catch (const Standard_Failure&) {
-        return false;
+        done = false;
     }
+    if (progress != nullptr) {
+        progress->throwIfCancelled(); // OCCT stopped early: the mesh is incomplete
+        progress->endPart();
+    }
+    return done;
 }
 
 std::vector<ColouredMesh> extractMeshes(const TopoDS_Shape& shape, double unitScale,
@@ -177,6 +193,16 @@ std::vector<ColouredMesh> extractMeshes(const TopoDS_Shape& shape, double unitSc
     }
     std::erase_if(groups, [](const ColouredMesh& g) { return g.mesh.indices.empty(); });
     return groups;
+}
+
+void checkTessellatedTriangles(std::uint64_t triangles, const ImportOptions& options,
+                               const std::filesystem::path& file) {
+    if (triangles > options.limits.maxUniqueTriangles) {
+        throwOverLimit(file,
+                       "tessellation reaches " + std::to_string(triangles) +
+                           " triangles (a coarser --deflection makes fewer)",
+                       options.limits.maxUniqueTriangles, "--max-unique-triangles");
+    }
 }
 
 glm::dmat4 toGlm(const gp_Trsf& trsf, double unitScale) {

@@ -11,6 +11,8 @@
 // tessellated contributes no triangles (the caller reports NoGeometry when nothing did).
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -23,6 +25,8 @@
 #include <glm/glm.hpp>
 
 #include "pipeline/io/CadBudget.h"
+#include "pipeline/io/CadProgress.h"
+#include "pipeline/io/Import.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::cad {
@@ -45,9 +49,12 @@ void clearTriangulation(const TopoDS_Shape& shape);
 // Tessellates every face of `shape` that has no triangulation yet, with an absolute linear
 // deflection (file units) and an angular deflection (radians). With a `budget`, faces that
 // would exceed it are meshed first within it (CadBudget.h; `unitScale` is metres per file
-// unit, for its notes). Returns false when OCCT threw.
+// unit, for its notes). With `progress`, the shape's faces are reported as they are meshed and
+// a raised cancel flag stops the meshing with Error(Cancelled) (CadProgress.h). Returns false
+// when OCCT threw.
 bool tessellate(const TopoDS_Shape& shape, double linearDeflection, double angularDeflection,
-                TessellationBudget* budget = nullptr, double unitScale = 1.0);
+                TessellationBudget* budget = nullptr, double unitScale = 1.0,
+                FaceProgress* progress = nullptr);
 
 // A triangle mesh for one colour of a shape; `colour` is empty when neither the faces nor
 // the caller gave one (the default material applies).
@@ -63,6 +70,11 @@ struct ColouredMesh {
 std::vector<ColouredMesh> extractMeshes(const TopoDS_Shape& shape, double unitScale,
                                         const std::optional<glm::vec4>& baseColour,
                                         const FaceColourMap* faceColours);
+
+// Throws TooLarge naming `file` when `triangles` tessellated so far exceed the file's
+// options.limits.maxUniqueTriangles.
+void checkTessellatedTriangles(std::uint64_t triangles, const ImportOptions& options,
+                               const std::filesystem::path& file);
 
 // Column-major glm matrix of an OCCT transformation (scale factor included), with the
 // translation converted to metres.

@@ -3,6 +3,7 @@
 #include "pipeline/io/CadXcaf.h"
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -24,6 +25,7 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/io/CadTessellation.h"
+#include "pipeline/io/InstancingGraph.h"
 
 namespace hlod::cad {
 
@@ -62,14 +64,16 @@ std::string hexName(const glm::vec4& linear) {
 class XcafSceneBuilder {
 public:
     XcafSceneBuilder(const Handle(TDocStd_Document) & doc, double unitScale,
-                     const ImportOptions& options, const std::filesystem::path& file)
+                     const ImportOptions& options, const std::filesystem::path& file,
+                     const Progress& progress)
         : shapes_(XCAFDoc_DocumentTool::ShapeTool(doc->Main())),
           colours_(XCAFDoc_DocumentTool::ColorTool(doc->Main())), unitScale_(unitScale),
-          options_(options), file_(file) {}
+          options_(options), file_(file), progress_(progress) {}
 
     Scene build();
 
 private:
+    std::uint64_t countPlacements(const TDF_Label& shape, int depth);
     void visit(const TDF_Label& shape, Id node, const std::optional<glm::vec4>& colour, int depth);
     void addComponents(const TDF_Label& assembly, Id node, const std::optional<glm::vec4>& colour,
                        int depth);
@@ -88,6 +92,12 @@ private:
     double unitScale_;
     const ImportOptions& options_;
     std::filesystem::path file_;
+    const Progress& progress_;
+    std::optional<FaceProgress> faces_;
+    // The assembly walk before building: placements under each label (saturating), and the
+    // distinct parts it reaches with their face counts (for the progress total).
+    std::map<std::string, std::uint64_t> placements_;
+    std::map<std::string, std::uint64_t> partFaces_;
     Scene scene_;
     double linearDeflection_ = 0.0;
     TessellationBudget budget_;
@@ -101,6 +111,19 @@ Scene XcafSceneBuilder::build() {
     TDF_LabelSequence free;
     shapes_->GetFreeShapes(free);
     if (free.IsEmpty()) throw Error(ErrorCode::Malformed, file_, "the file holds no shape");
+    // First, before anything walks the located shapes (the bounding box below visits every
+    // placement of every face): how many placements the assembly graph expands to.
+    std::uint64_t placements = 0;
+    for (const TDF_Label& label : free) {
+        if (visible(label)) placements = saturatingAdd(placements, countPlacements(label, 0));
+    }
+    if (placements > options_.limits.maxInstances) {
+        throwOverLimit(file_,
+                       "the assembly places " + std::to_string(placements) +
+                           " parts once its reused sub-assemblies are expanded",
+                       options_.limits.maxInstances, "--max-instances");
+    }
+
     // The deflection is relative to the whole model, so gather every free shape first.
     TopoDS_Compound all;
     BRep_Builder builder;
@@ -116,6 +139,10 @@ Scene XcafSceneBuilder::build() {
     }
     linearDeflection_ = options_.cadRelativeDeflection * diagonal;
     budget_ = makeBudget(file_, diagonal, linearDeflection_, options_.cadAngularDeflection);
+    std::uint64_t totalFaces = 0;
+    for (const auto& [entry, faces] : partFaces_)
+        totalFaces += faces;
+    faces_.emplace(progress_, file_, totalFaces);
     const std::string stem = file_.stem().string();
     for (int i = 1; i <= free.Length(); ++i) {
         const TDF_Label& label = free.Value(i);
@@ -131,6 +158,33 @@ Scene XcafSceneBuilder::build() {
     scene_.updateWorldTransforms();
     scene_.importNotes = std::move(budget_.notes);
     return std::move(scene_);
+}
+
+// Placements (part instances) under `shape` with every sub-assembly expanded, computed once per
+// label: a file of 30 levels each placing the level below twice is 2^30 placements, counted
+// here in 30 steps instead of built. Visibility is judged as visit() does.
+std::uint64_t XcafSceneBuilder::countPlacements(const TDF_Label& shape, int depth) {
+    if (depth > kMaxAssemblyDepth) {
+        throw Error(ErrorCode::Malformed, file_, "assembly nested deeper than 256 levels");
+    }
+    const std::string entry = entryOf(shape);
+    if (auto it = placements_.find(entry); it != placements_.end()) return it->second;
+    std::uint64_t count = 0;
+    if (shapes_->IsAssembly(shape)) {
+        TDF_LabelSequence components;
+        XCAFDoc_ShapeTool::GetComponents(shape, components, false);
+        for (const TDF_Label& component : components) {
+            TDF_Label referred;
+            if (!XCAFDoc_ShapeTool::GetReferredShape(component, referred)) continue;
+            if (!visible(component) || !visible(referred)) continue;
+            count = saturatingAdd(count, countPlacements(referred, depth + 1));
+        }
+    } else if (shapes_->IsSimpleShape(shape)) {
+        count = 1;
+        partFaces_.emplace(entry, faceCount(shapes_->GetShape(shape)));
+    }
+    placements_.emplace(entry, count);
+    return count;
 }
 
 // `inherited` is what the parent passes down (its instance colour, or its own colour).
@@ -186,8 +240,10 @@ const std::vector<Id>& XcafSceneBuilder::partMeshes(const TDF_Label& part,
                              : std::array<float, 4>{}};
     if (auto it = partMeshes_.find(key); it != partMeshes_.end()) return it->second;
     const TopoDS_Shape shape = shapes_->GetShape(part);
-    if (tessellated_.insert(entry).second)
-        tessellate(shape, linearDeflection_, options_.cadAngularDeflection, &budget_, unitScale_);
+    if (tessellated_.insert(entry).second) {
+        tessellate(shape, linearDeflection_, options_.cadAngularDeflection, &budget_, unitScale_,
+                   &*faces_);
+    }
     const FaceColourMap faces = faceColours(part);
     std::vector<ColouredMesh> groups = extractMeshes(shape, unitScale_, colour, &faces);
     std::string name = labelName(part);
@@ -196,11 +252,7 @@ const std::vector<Id>& XcafSceneBuilder::partMeshes(const TDF_Label& part,
     for (std::size_t g = 0; g < groups.size(); ++g) {
         Mesh& mesh = groups[g].mesh;
         triangles_ += mesh.triangleCount();
-        if (triangles_ > options_.maxElements) {
-            throw Error(ErrorCode::TooLarge, file_,
-                        "tessellation exceeds " + std::to_string(options_.maxElements) +
-                            " triangles (raise the relative deflection)");
-        }
+        checkTessellatedTriangles(triangles_, options_, file_);
         mesh.name = groups.size() == 1 ? name : name + "_" + std::to_string(g + 1);
         mesh.material = materialFor(groups[g].colour);
         ids.push_back(scene_.addMesh(std::move(mesh)));
@@ -251,8 +303,9 @@ Id XcafSceneBuilder::materialFor(const std::optional<glm::vec4>& colour) {
 } // namespace
 
 Scene sceneFromXcaf(const Handle(TDocStd_Document) & doc, double unitScale,
-                    const ImportOptions& options, const std::filesystem::path& file) {
-    return XcafSceneBuilder(doc, unitScale, options, file).build();
+                    const ImportOptions& options, const std::filesystem::path& file,
+                    const Progress& progress) {
+    return XcafSceneBuilder(doc, unitScale, options, file, progress).build();
 }
 
 } // namespace hlod::cad

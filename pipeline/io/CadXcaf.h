@@ -30,9 +30,15 @@
 namespace hlod::cad {
 
 // Builds the scene of a transferred XCAF document. `unitScale` is metres per document unit.
+// Before anything is built or tessellated, the assembly graph is walked once (each shape label
+// once, placements counted along the way) so that sub-assemblies reused at every level cannot
+// expand into billions of nodes: more placements than options.limits.maxInstances is refused.
+// Tessellation reports per face on `progress` (CadProgress.h).
 // Throws hlod::Error naming `file`: NoGeometry when no face tessellates, TooLarge past
-// options.maxElements triangles, Malformed for an assembly nested absurdly deep.
+// options.limits (placements, tessellated triangles), Malformed for an assembly nested
+// absurdly deep, Cancelled when `progress` is cancelled.
 Scene sceneFromXcaf(const Handle(TDocStd_Document) & doc, double unitScale,
-                    const ImportOptions& options, const std::filesystem::path& file);
+                    const ImportOptions& options, const std::filesystem::path& file,
+                    const Progress& progress = {});
 
 } // namespace hlod::cad

@@ -17,6 +17,7 @@
 #include <optional>
 #include <set>
 #include <string_view>
+#include <tuple>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -40,6 +41,7 @@ struct LoadContext {
     std::string refused; // first external path refused, for the error message
     std::map<int, Texture> images; // decoded by the image callback, by glTF image index
     std::set<fs::path> referenced; // files read besides the scene file (buffers, images)
+    TexelBudget texels;            // what this file's images may decode (ImportLimits.h)
 };
 
 // tinygltf also probes the bare relative URI ("./scene.bin"): that names the scene's folder too.
@@ -94,7 +96,8 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
 // Images decoded so far in this process, by content. A package's leaf tiles all reference the
 // same few shared texture files: each is decoded once, not once per tile. Bounded by the
 // decoded bytes it holds; the key is the bytes' size and hash, the bytes are compared on a hit.
-Texture cachedTexture(const unsigned char* bytes, std::size_t size, const std::string& name) {
+Texture cachedTexture(const unsigned char* bytes, std::size_t size, const std::string& name,
+                      TexelBudget& budget) {
     struct Entry {
         std::string bytes;
         Texture texture;
@@ -113,8 +116,10 @@ Texture cachedTexture(const unsigned char* bytes, std::size_t size, const std::s
             return t;
         }
     }
-    Texture texture = textureFromBytes({bytes, size}, name);
-    const std::size_t decoded = texture.image ? texture.image->pixels.size() : 0;
+    Texture texture = textureFromBytes({bytes, size}, name, &budget);
+    // A refusal may be this file's budget: another file decodes the same bytes afresh.
+    if (!texture.image) return texture;
+    const std::size_t decoded = texture.image->pixels.size();
     std::lock_guard lock(mutex);
     if (heldBytes + decoded + size > kMaxHeldBytes) {
         cache.clear();
@@ -132,7 +137,8 @@ bool loadImage(tinygltf::Image* image, const int index, std::string*, std::strin
         !image->uri.empty() && image->uri.rfind("data:", 0) != 0
             ? image->uri
             : (image->name.empty() ? "image " + std::to_string(index) : image->name);
-    Texture texture = cachedTexture(bytes, static_cast<std::size_t>(std::max(size, 0)), name);
+    Texture texture =
+        cachedTexture(bytes, static_cast<std::size_t>(std::max(size, 0)), name, ctx->texels);
     if (!texture.error.empty()) texture.error = ctx->file.string() + ": " + texture.error;
     ctx->images[index] = std::move(texture);
     image->image.clear();
@@ -218,17 +224,54 @@ std::vector<Id> importMaterials(const tinygltf::Model& model, LoadContext& ctx, 
     return ids;
 }
 
+// Triangles a primitive declares (from its index or POSITION accessor count, before reading):
+// count / 3 for triangle lists, count - 2 for strips and fans, 0 for points and lines.
+std::uint64_t declaredTriangles(const tinygltf::Model& model, const tinygltf::Primitive& prim) {
+    int accessor = prim.indices;
+    if (accessor < 0) {
+        const auto pos = prim.attributes.find("POSITION");
+        accessor = pos == prim.attributes.end() ? -1 : pos->second;
+    }
+    if (accessor < 0 || accessor >= static_cast<int>(model.accessors.size())) return 0;
+    const std::uint64_t count = model.accessors[static_cast<std::size_t>(accessor)].count;
+    const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+    if (mode == TINYGLTF_MODE_TRIANGLES) return count / 3;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN)
+        return count > 2 ? count - 2 : 0;
+    return 0;
+}
+
 // Each glTF mesh maps to the hlod meshes of its triangle primitives.
 std::vector<std::vector<Id>> importMeshes(const tinygltf::Model& model,
                                           const std::vector<Id>& materials,
                                           const ImportOptions& options, const fs::path& file,
                                           Scene& scene) {
     std::vector<std::vector<Id>> out(model.meshes.size());
-    GltfAccessorReader reader(model, file, options.maxElements);
+    GltfAccessorReader reader(model, file, options.limits.maxElements);
+    std::uint64_t triangles = 0;
+    using PrimitiveKey = std::tuple<std::map<std::string, int>, int, int, int>;
+    std::map<PrimitiveKey, Id> read;
     for (std::size_t mi = 0; mi < model.meshes.size(); ++mi) {
         const tinygltf::Mesh& gm = model.meshes[mi];
         for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
             const tinygltf::Primitive& prim = gm.primitives[pi];
+            // A primitive identical to one read before (same accessors, mode and material) is
+            // the same mesh placed again, not a copy: 12,000 primitives reading one accessor of
+            // 10,000 triangles would otherwise be 120 M triangles (10 GB) from an 840 KB file.
+            const PrimitiveKey key{prim.attributes, prim.indices, prim.mode, prim.material};
+            if (auto seen = read.find(key); seen != read.end()) {
+                out[mi].push_back(seen->second);
+                continue;
+            }
+            // Distinct primitives may still share or overlap accessors: the total is bounded
+            // before it is allocated.
+            triangles += declaredTriangles(model, prim);
+            if (triangles > options.limits.maxUniqueTriangles) {
+                throwOverLimit(file,
+                               "its mesh primitives declare " + std::to_string(triangles) +
+                                   " triangles or more",
+                               options.limits.maxUniqueTriangles, "--max-unique-triangles");
+            }
             std::optional<Mesh> mesh = reader.readPrimitive(prim);
             if (!mesh) continue; // points or lines
             mesh->name = gm.primitives.size() > 1 ? gm.name + "#" + std::to_string(pi) : gm.name;
@@ -240,7 +283,9 @@ std::vector<std::vector<Id>> importMeshes(const tinygltf::Model& model,
                 }
                 mesh->material = materials[static_cast<std::size_t>(prim.material)];
             }
-            out[mi].push_back(scene.addMesh(std::move(*mesh)));
+            const Id id = scene.addMesh(std::move(*mesh));
+            read.emplace(key, id);
+            out[mi].push_back(id);
         }
     }
     return out;
@@ -437,7 +482,7 @@ bool loadModel(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& 
     if (!doc.is_discarded() && usesMeshopt(doc)) {
         auto buffers = meshoptBuffers(doc, std::move(chunks.bin), ctx);
         const std::vector<std::uint8_t> plain =
-            decodeMeshoptGltf(std::move(doc), buffers, ctx.file, options.maxElements);
+            decodeMeshoptGltf(std::move(doc), buffers, ctx.file, options.limits.maxElements);
         return loader.LoadBinaryFromMemory(&model, &err, &warn, plain.data(),
                                            static_cast<unsigned>(plain.size()), folder);
     }
@@ -455,6 +500,7 @@ Scene importGltf(const fs::path& file, const ImportOptions& options) {
     LoadContext ctx;
     ctx.file = file;
     ctx.folder = fs::absolute(file).parent_path();
+    ctx.texels = TexelBudget(options.limits);
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fsCallbacks{&fileExists, &expandPath, &readWholeFile, &writeWholeFile,
                                       &ctx};

@@ -84,23 +84,32 @@ std::vector<fs::path> expandInputs(const std::vector<fs::path>& inputs) {
     return files;
 }
 
-Scene importOne(const fs::path& file, const ImportOptions& options) {
-    checkReadableFile(file);
+Scene importFormat(const fs::path& file, const ImportOptions& options, const Progress& progress) {
     switch (formatForPath(file)) {
     case SceneFormat::Gltf:
         return importGltf(file, options);
     case SceneFormat::Cad:
         // OpenCASCADE too: its shape healing can hang on absurd numbers (timeout) and its
-        // readers crash on dangling references.
-        return runIsolated(file, [&] { return importCad(file, options); });
+        // readers crash on dangling references. Its tessellation reports per face.
+        return runIsolated(
+            file, [&](const Progress& child) { return importCad(file, options, child); }, {},
+            progress);
     case SceneFormat::Assimp:
         // assimp runs out of process: some of its readers crash on bad files.
-        return runIsolated(file, [&] { return importAssimp(file, options); });
+        return runIsolated(
+            file, [&](const Progress&) { return importAssimp(file, options); }, {}, progress);
     case SceneFormat::Unknown:
         break;
     }
     throw Error(ErrorCode::UnknownFormat, file,
                 "unknown file extension '" + file.extension().string() + "'");
+}
+
+Scene importOne(const fs::path& file, const ImportOptions& options, const Progress& progress) {
+    checkReadableFile(file);
+    Scene scene = importFormat(file, options, progress);
+    checkSceneLimits(scene, file, options.limits);
+    return scene;
 }
 
 } // namespace
@@ -153,7 +162,7 @@ Scene importScene(const std::vector<fs::path>& inputs, const ImportOptions& opti
     const std::vector<fs::path> files = expandInputs(inputs);
     if (files.size() == 1) {
         progress.emit({"import", 0, 1, files[0].filename().string()});
-        Scene s = importOne(files[0], options);
+        Scene s = importOne(files[0], options, progress);
         progress.emit({"import", 1, 1, files[0].filename().string()});
         return s;
     }
@@ -161,7 +170,9 @@ Scene importScene(const std::vector<fs::path>& inputs, const ImportOptions& opti
     for (std::size_t i = 0; i < files.size(); ++i) {
         progress.throwIfCancelled();
         progress.emit({"import", i, files.size(), files[i].filename().string()});
-        scene.append(importOne(files[i], options), files[i].stem().string());
+        scene.append(importOne(files[i], options, progress), files[i].stem().string());
+        // The limits hold for what is loaded together, too.
+        checkSceneLimits(scene, files[i], options.limits);
     }
     progress.emit({"import", files.size(), files.size(), ""});
     return scene;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pipeline/core/Progress.h"
+#include "pipeline/io/ImportLimits.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod {
@@ -26,8 +27,8 @@ struct ImportOptions {
     // (data/scenes/occt-kitchen) is the exception: it is modelled in centimetres (0.01).
     // STEP/IGES ignore this: they declare their unit and are converted to metres from it.
     double cadBrepUnitMetres = 0.001;
-    // Refuse files whose declared element counts exceed this (before allocating).
-    std::size_t maxElements = 50'000'000;
+    // How much work and memory one file may expand into (ImportLimits.h).
+    ImportLimits limits;
 };
 
 enum class SceneFormat { Gltf, Cad, Assimp, Unknown };
@@ -47,11 +48,19 @@ Scene importScene(const std::vector<std::filesystem::path>& inputs,
 
 Scene importGltf(const std::filesystem::path& file, const ImportOptions& options);
 Scene importAssimp(const std::filesystem::path& file, const ImportOptions& options);
-Scene importCad(const std::filesystem::path& file, const ImportOptions& options);
+// CAD tessellation reports per face on `progress` (stage "tessellate": faces done of the faces
+// of every distinct part) and stops with Error(Cancelled) when its cancel flag is raised.
+Scene importCad(const std::filesystem::path& file, const ImportOptions& options,
+                const Progress& progress = {});
 
 // Checks a freshly imported scene and throws Malformed/NoGeometry naming `file`: indices in
 // range, positions finite, the hierarchy a tree, at least one triangle.
 void validateScene(const Scene& scene, const std::filesystem::path& file);
+
+// Throws TooLarge naming `file` when the scene holds more unique triangles, instances or
+// instanced triangles than `limits` allow (ImportLimits.h).
+void checkSceneLimits(const Scene& scene, const std::filesystem::path& file,
+                      const ImportLimits& limits);
 
 // Refuses a path that escapes `folder` (after resolving "..", symlinks and absolute paths).
 // Used for every external reference (buffers, images, material libraries).

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/io/DaeInstancing.h"
 
 namespace hlod {
 
@@ -117,7 +118,8 @@ void precheckStl(const fs::path& file, std::uint64_t size, std::size_t maxElemen
 
 } // namespace
 
-void precheckElementCounts(const fs::path& file, std::size_t maxElements) {
+void precheckElementCounts(const fs::path& file, const ImportLimits& limits) {
+    const std::size_t maxElements = limits.maxElements;
     std::error_code ec;
     const std::uint64_t size = fs::file_size(file, ec);
     if (ec) return;
@@ -128,6 +130,8 @@ void precheckElementCounts(const fs::path& file, std::size_t maxElements) {
         precheckPly(file, size, maxElements);
     else if (ext == ".stl")
         precheckStl(file, size, maxElements);
+    else if (ext == ".dae")
+        checkDaeInstancing(file, limits);
 }
 
 } // namespace hlod

@@ -90,4 +90,27 @@ void validateScene(const Scene& scene, const std::filesystem::path& file) {
     if (triangles == 0) throw Error(ErrorCode::NoGeometry, file, "scene holds no triangles");
 }
 
+void checkSceneLimits(const Scene& scene, const std::filesystem::path& file,
+                      const ImportLimits& limits) {
+    std::uint64_t unique = 0, drawn = 0;
+    for (const Mesh& m : scene.meshes)
+        unique += m.triangleCount();
+    for (const MeshInstance& inst : scene.instances) {
+        if (inst.mesh < scene.meshes.size()) drawn += scene.meshes[inst.mesh].triangleCount();
+    }
+    if (unique > limits.maxUniqueTriangles) {
+        throwOverLimit(file, "the meshes hold " + std::to_string(unique) + " triangles",
+                       limits.maxUniqueTriangles, "--max-unique-triangles");
+    }
+    if (scene.instances.size() > limits.maxInstances) {
+        throwOverLimit(
+            file, "the scene places " + std::to_string(scene.instances.size()) + " mesh instances",
+            limits.maxInstances, "--max-instances");
+    }
+    if (drawn > limits.maxTriangles) {
+        throwOverLimit(file, "its placed meshes make " + std::to_string(drawn) + " triangles",
+                       limits.maxTriangles, "--max-triangles");
+    }
+}
+
 } // namespace hlod

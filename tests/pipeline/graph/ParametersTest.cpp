@@ -24,7 +24,9 @@ TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
         "--screen-size", "--pixel-error", "--fov",          "--viewport-height",
         "--threads",     "--cache",       "--no-cache",     "--no-dlod",
         "--deflection",  "--brep-unit",   "--geo",          "-o",
-        "--compression", "--proxy-textures", "--proxy-ratio", "--level-growth"};
+        "--compression", "--proxy-textures", "--proxy-ratio", "--level-growth",
+        // The import budget (ImportLimits.h, issue 22).
+        "--max-triangles", "--max-unique-triangles", "--max-instances", "--max-texels"};
     std::set<std::string> keys, declared;
     for (const ParamDecl& d : parameterDeclarations()) {
         EXPECT_TRUE(keys.insert(d.key).second) << d.key << " declared twice";
@@ -51,6 +53,10 @@ TEST(Parameters, DefaultsAreThoseOfThePipelineStructs) {
     const ImportOptions io = importOptionsFrom(defaultValues(NodeKind::Import));
     EXPECT_EQ(io.cadRelativeDeflection, ImportOptions{}.cadRelativeDeflection);
     EXPECT_EQ(io.cadBrepUnitMetres, ImportOptions{}.cadBrepUnitMetres);
+    EXPECT_EQ(io.limits.maxTriangles, ImportLimits{}.maxTriangles);
+    EXPECT_EQ(io.limits.maxUniqueTriangles, ImportLimits{}.maxUniqueTriangles);
+    EXPECT_EQ(io.limits.maxInstances, ImportLimits{}.maxInstances);
+    EXPECT_EQ(io.limits.maxTexels, ImportLimits{}.maxTexels);
 }
 
 TEST(Parameters, TextIsParsedAndCheckedAgainstTheDeclaration) {
