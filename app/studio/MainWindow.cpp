@@ -350,8 +350,10 @@ void MainWindow::onLoadProgress(const QString& stage, qint64 done, qint64 total)
         busyBar_->setValue(static_cast<int>(1000.0 * static_cast<double>(done) / total));
     }
     if (stage.isEmpty()) return;
-    // CAD import reports "tessellate" per face (faces meshed / all distinct faces).
+    // CAD import reports "transfer" (STEP/IGES to shapes, per mille), then "tessellate" per
+    // face (faces meshed / all distinct faces).
     const QString what = stage == QLatin1String("tessellate") ? tr("Meshing CAD faces")
+                         : stage == QLatin1String("transfer") ? tr("Converting CAD shapes (‰)")
                          : stage == QLatin1String("import")   ? tr("Reading")
                                                               : stage;
     busyBar_->setToolTip(total > 0 ? tr("%1 %2/%3").arg(what).arg(done).arg(total) : what);

@@ -45,6 +45,7 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/io/CadCrashGuard.h"
+#include "pipeline/io/CadProgress.h"
 #include "pipeline/io/CadTessellation.h"
 #include "pipeline/io/CadXcaf.h"
 #include "pipeline/io/Import.h"
@@ -147,7 +148,8 @@ template <typename Reader> void configure(Reader& reader) {
 }
 
 // Reads and transfers a STEP or IGES file into `doc`; throws Malformed naming the file.
-void readXcaf(const fs::path& file, CadKind kind, Handle(TDocStd_Document) & doc) {
+void readXcaf(const fs::path& file, CadKind kind, Handle(TDocStd_Document) & doc,
+              const Progress& progress) {
     const std::string path = file.string();
     const auto fail = [&](const std::string& problem) {
         throw Error(ErrorCode::Malformed, file, problem);
@@ -161,7 +163,12 @@ void readXcaf(const fs::path& file, CadKind kind, Handle(TDocStd_Document) & doc
         if (reader.NbRootsForTransfer() <= 0) {
             fail(std::string(format) + " file has no transferable roots (no product or shape)");
         }
-        if (!reader.Transfer(doc)) fail(std::string(format) + " transfer to shapes failed");
+        cad::StepProgress transfer(progress, file);
+        const Handle(Message_ProgressIndicator) indicator = transfer.indicator();
+        const bool transferred = reader.Transfer(doc, indicator->Start());
+        transfer.throwIfCancelled();
+        if (!transferred) fail(std::string(format) + " transfer to shapes failed");
+        transfer.finish();
     };
     if (kind == CadKind::Iges) {
         IGESCAFControl_Reader reader;
@@ -194,7 +201,7 @@ Scene importXcaf(const fs::path& file, CadKind kind, const ImportOptions& option
         // Outside the guarded call: a fault abandons its frames without unlocking/restoring.
         const std::lock_guard lock(readerMutex());
         const QuietStdout quiet;
-        cad::runGuarded([&] { readXcaf(file, kind, document.get()); });
+        cad::runGuarded([&] { readXcaf(file, kind, document.get(), progress); });
     }
     Scene scene;
     cad::runGuarded([&] {

@@ -44,7 +44,38 @@ private:
     std::uint64_t faces_;
 };
 
+class StepIndicator : public Message_ProgressIndicator {
+public:
+    explicit StepIndicator(StepProgress& owner) : owner_(owner) {}
+    Standard_Boolean UserBreak() override { return owner_.cancelled(); }
+    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
+        owner_.reached(GetPosition());
+    }
+
+private:
+    StepProgress& owner_;
+};
+
 } // namespace
+
+StepProgress::StepProgress(const Progress& progress, std::filesystem::path file)
+    : progress_(progress), file_(std::move(file)) {
+    reached(0.0);
+}
+
+Handle(Message_ProgressIndicator) StepProgress::indicator() { return new StepIndicator(*this); }
+
+void StepProgress::reached(double position) {
+    const auto d = static_cast<std::uint64_t>(std::floor(std::clamp(position, 0.0, 1.0) * 1000.0));
+    if (started_ && d <= done_) return;
+    started_ = true;
+    done_ = d;
+    progress_.emit({"transfer", done_, 1000, file_.filename().string() + ": converting to shapes"});
+}
+
+void StepProgress::throwIfCancelled() const {
+    if (cancelled()) throw Error(ErrorCode::Cancelled, file_, "import cancelled");
+}
 
 FaceProgress::FaceProgress(const Progress& progress, std::filesystem::path file,
                            std::uint64_t totalFaces)

@@ -55,6 +55,28 @@ private:
     std::uint64_t partDone_ = 0;
 };
 
+// Progress of the STEP/IGES transfer to shapes (OCCT's reader has no face count to give
+// there): stage "transfer", done/total = OCCT's position in per mille, detail
+// "<file name>: converting to shapes"; UserBreak() is the cancel flag. Reports never go
+// backwards; the last is 1000 of 1000 once finish() is called.
+class StepProgress {
+public:
+    StepProgress(const Progress& progress, std::filesystem::path file);
+    Handle(Message_ProgressIndicator) indicator();
+    // Position 0..1 reached (clamped, never backwards).
+    void reached(double position);
+    void finish() { reached(1.0); }
+    bool cancelled() const { return progress_.cancelled(); }
+    // Throws Error(Cancelled) naming the file when the cancel flag is raised.
+    void throwIfCancelled() const;
+
+private:
+    const Progress& progress_;
+    std::filesystem::path file_;
+    std::uint64_t done_ = 0;
+    bool started_ = false;
+};
+
 // Distinct faces of `shape` (TopoDS_Shape::IsSame: a face shared by two shells counts once).
 std::uint64_t faceCount(const TopoDS_Shape& shape);
 

@@ -89,6 +89,9 @@ TEST(CadProgress, StepAssemblyFacesArriveThroughTheIsolatedReader) {
     const std::uint64_t total = faces.front().total;
     EXPECT_GT(total, 5u);
     expectMonotonicToTotal(faces, total);
+    // Before tessellation, OCCT's transfer to shapes reports its position in per mille.
+    expectMonotonicToTotal(rec.stage("transfer"), 1000);
+    EXPECT_EQ(rec.stage("transfer").back().detail, "as1-oc-214.stp: converting to shapes");
     // The file-level stage still brackets the import.
     const auto files = rec.stage("import");
     ASSERT_FALSE(files.empty());
