@@ -314,6 +314,18 @@
         <translation>%1 %2/%3</translation>
     </message>
     <message>
+        <source>Meshing CAD faces</source>
+        <translation>Nätar CAD-ytor</translation>
+    </message>
+    <message>
+        <source>Converting CAD shapes (‰)</source>
+        <translation>Konverterar CAD-former (‰)</translation>
+    </message>
+    <message>
+        <source>Reading</source>
+        <translation>Läser</translation>
+    </message>
+    <message>
         <source>Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, bake %5 s: %6 baked, %7 reused)</source>
         <translation>HLOD byggd: %1 noder, höjd %2, %3 proxytrianglar (klustring %4 s, bakning %5 s: %6 bakade, %7 återanvända)</translation>
     </message>
