@@ -1,4 +1,5 @@
-// libFuzzer entry point of the camera_path target; what it checks: fuzz/Targets.h, hlod::fuzz::cameraPath.
+// libFuzzer entry point of the camera_path target; what it checks: fuzz/Targets.h,
+// hlod::fuzz::cameraPath.
 #include "fuzz/Targets.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

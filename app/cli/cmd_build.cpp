@@ -280,7 +280,8 @@ int runBuild(const CommandArgs& argv) {
         std::fprintf(stderr,
                      "hlod build: warning: %zu damaged proxy %s in the cache %s not trusted and "
                      "%s baked again\n",
-                     n, n == 1 ? "file" : "files", n == 1 ? "was" : "were", n == 1 ? "was" : "were");
+                     n, n == 1 ? "file" : "files", n == 1 ? "was" : "were",
+                     n == 1 ? "was" : "were");
     }
     if (args.has("--json")) {
         printJson(out, plan);

@@ -151,13 +151,15 @@ private:
         const int self = addTile(std::move(t));
         layout_.tileOfNode[n] = self;
         // Leaf children and the leaves of folded children: one group, merged per look.
-        std::vector<Id> leaves, foldedChildren;
+        std::vector<Id> leaves;
+        std::vector<std::pair<Id, Id>> folds; // a folded child and its first leaf
         for (Id c : tree_.nodes[n].children) {
             if (tree_.nodes[c].isLeaf()) {
                 leaves.push_back(c);
             } else if (folded(c)) {
+                const std::size_t first = leaves.size();
                 leavesBelow(c, leaves);
-                foldedChildren.push_back(c);
+                folds.emplace_back(c, leaves[first]);
             } else {
                 innerTile(c, self);
             }
@@ -167,22 +169,18 @@ private:
         splitGroup(std::move(leaves), groups);
         for (std::vector<Id>& g : groups)
             groupTile(std::move(g), self, n);
-        // A folded node is shown by the group tile of its first leaf.
-        for (Id c : foldedChildren) {
-            std::vector<Id> below;
-            leavesBelow(c, below);
-            const int tile = layout_.tileOfNode[below.front()];
-            std::vector<Id> stack(tree_.nodes[c].children.begin(), tree_.nodes[c].children.end());
-            layout_.tileOfNode[c] = tile;
-            while (!stack.empty()) {
-                const Id m = stack.back();
-                stack.pop_back();
-                if (tree_.nodes[m].isLeaf()) continue;
-                layout_.tileOfNode[m] = tile;
-                stack.insert(stack.end(), tree_.nodes[m].children.begin(),
-                             tree_.nodes[m].children.end());
-            }
-        }
+        // A folded node (and every inner node below it) is shown by its first leaf's group.
+        for (const auto& [c, first] : folds)
+            showInnerBy(c, layout_.tileOfNode[first]);
+    }
+
+    // The inner nodes of a folded subtree (at most kSmallSubtreeTriangles, so shallow) are
+    // shown by `tile`; its leaves already have theirs.
+    void showInnerBy(Id n, int tile) {
+        if (tree_.nodes[n].isLeaf()) return;
+        layout_.tileOfNode[n] = tile;
+        for (Id c : tree_.nodes[n].children)
+            showInnerBy(c, tile);
     }
 
     int addContent(ContentPlan c) {

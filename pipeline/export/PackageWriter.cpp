@@ -77,8 +77,8 @@ public:
                 return;
             }
         }
-        writeFileBytes(target, std::string_view(reinterpret_cast<const char*>(bytes.data()),
-                                                bytes.size()));
+        writeFileBytes(target,
+                       std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         ++s_.written;
     }
 
@@ -186,8 +186,7 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
             problem = "cannot write " + inside + ": " + problem.substr(14);
         }
         throw Error(ErrorCode::Io, dir,
-                    problem +
-                        (fs::exists(dir, ec) ? " (the previous package is unchanged)" : ""));
+                    problem + (fs::exists(dir, ec) ? " (the previous package is unchanged)" : ""));
     } catch (...) {
         fs::remove_all(tmp, ec);
         throw;

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <meshoptimizer.h>
 
 #include "pipeline/io/GlbMeshopt.h"
 #include "pipeline/io/TextureImage.h"
 #include "pipeline/proxy/ContentHash.h"
+#include "pipeline/scene/AppendPlaced.h"
 
 namespace hlod {
 
@@ -196,31 +196,13 @@ struct Merged {
     std::vector<std::size_t> members; // slot indices
 };
 
-// Appends a prepared mesh placed by `matrix` (normals by its inverse transpose, the winding
-// flipped by a mirror) and records where it went.
+// Appends a prepared mesh placed by `matrix` (AppendPlaced.h) and records where it went.
 void append(Merged& m, const auto& p, const glm::dmat4& matrix, LeafInContent& where) {
-    const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(matrix));
-    const auto base = static_cast<std::uint32_t>(m.positions.size());
     where.merged = true;
-    where.firstVertex = base;
-    where.vertexCount = p.positions.size();
     where.firstIndex = m.indices.size();
     where.indexCount = p.indices.size();
-    for (const glm::vec3& v : p.positions)
-        m.positions.push_back(glm::vec3(matrix * glm::dvec4(glm::dvec3(v), 1.0)));
-    for (const glm::vec3& n : p.normals) {
-        const glm::dvec3 t = normalMatrix * glm::dvec3(n);
-        const double len = glm::length(t);
-        m.normals.push_back(len > 0.0 ? glm::vec3(t / len) : glm::vec3(0, 1, 0));
-    }
-    m.uvs.insert(m.uvs.end(), p.uvs.begin(), p.uvs.end());
-    m.colors.insert(m.colors.end(), p.colors.begin(), p.colors.end());
-    const bool mirrored = glm::determinant(glm::dmat3(matrix)) < 0.0; // flips the winding
-    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-        m.indices.push_back(base + p.indices[t]);
-        m.indices.push_back(base + p.indices[t + (mirrored ? 2 : 1)]);
-        m.indices.push_back(base + p.indices[t + (mirrored ? 1 : 2)]);
-    }
+    where.firstVertex = appendPlaced(m, p, matrix);
+    where.vertexCount = p.positions.size();
 }
 
 GlbMesh lookOf(const auto& p) {

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <sstream>
 
@@ -52,31 +52,26 @@ using N = NodeKind;
 // may expand into before it is refused (textures: left undecoded).
 void addImportLimits(std::vector<ParamDecl>& v) {
     const ImportLimits l;
-    constexpr double kIntMax = 2147483647.0;
-    const auto count = [](std::uint64_t n) { return static_cast<int>(n); };
-    v.push_back(ranged(decl("max_triangles", "Max triangles", T::Int, N::Import,
-                            count(l.maxTriangles), "",
-                            "Import limit: triangles of all placed meshes (as `hlod info` counts "
-                            "them); a file over it is refused",
-                            "--max-triangles"),
-                       1, kIntMax));
-    v.push_back(ranged(decl("max_unique_triangles", "Max unique triangles", T::Int, N::Import,
-                            count(l.maxUniqueTriangles), "",
-                            "Import limit: triangles the file's meshes hold, each mesh counted "
-                            "once; a file over it is refused",
-                            "--max-unique-triangles"),
-                       1, kIntMax));
-    v.push_back(ranged(decl("max_instances", "Max instances", T::Int, N::Import,
-                            count(l.maxInstances), "",
-                            "Import limit: placed meshes (and nodes) once every level of "
-                            "instancing is expanded; a file over it is refused",
-                            "--max-instances"),
-                       1, kIntMax));
-    v.push_back(ranged(decl("max_texels", "Max texels", T::Int, N::Import, count(l.maxTexels), "",
-                            "Import limit: texels of all decoded textures of a file; images "
-                            "past it are not decoded (their materials keep their colour)",
-                            "--max-texels"),
-                       1, kIntMax));
+    const auto limit = [&](const char* key, const char* label, std::uint64_t value,
+                           const char* help, const char* flag) {
+        v.push_back(ranged(decl(key, label, T::Int, N::Import, static_cast<int>(value), "",
+                                std::string("Import limit: ") + help, flag),
+                           1, 2147483647.0));
+    };
+    limit("max_triangles", "Max triangles", l.maxTriangles,
+          "triangles of all placed meshes (as `hlod info` counts them); a file over it is refused",
+          "--max-triangles");
+    limit("max_unique_triangles", "Max unique triangles", l.maxUniqueTriangles,
+          "triangles the file's meshes hold, each mesh counted once; a file over it is refused",
+          "--max-unique-triangles");
+    limit("max_instances", "Max instances", l.maxInstances,
+          "placed meshes (and nodes) once every level of instancing is expanded; a file over "
+          "it is refused",
+          "--max-instances");
+    limit("max_texels", "Max texels", l.maxTexels,
+          "texels of all decoded textures of a file; images past it are not decoded (their "
+          "materials keep their colour)",
+          "--max-texels");
 }
 
 void addImportAndCluster(std::vector<ParamDecl>& v) {
@@ -144,21 +139,21 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
         decl("viewport_height", "Viewport height", T::Double, N::Bake, sp.viewportHeight, "px",
              "Viewport height of the reference camera (switch distances)", "--viewport-height"),
         1.0, 100000.0));
-    v.push_back(ranged(decl("proxy_ratio", "Proxy ratio", T::Double, N::Bake, BakeParams{}.proxyRatio,
-                            "× input",
+    v.push_back(ranged(decl("proxy_ratio", "Proxy ratio", T::Double, N::Bake,
+                            BakeParams{}.proxyRatio, "× input",
                             "A cluster keeps its proxy only when the proxy has at most this "
                             "fraction of the triangles it replaces; otherwise the cluster is "
                             "dissolved into its parent. All proxies together then hold at most "
                             "ratio / (1 - ratio) of the original; 1 keeps every proxy",
                             "--proxy-ratio"),
                        0.05, 1.0, true));
-    v.push_back(choices(decl("proxy_textures", "Proxy textures", T::Enum, N::Bake,
-                             std::string("on"), "",
-                             "Bake a base-colour atlas for every proxy (charts, one texel per "
-                             "pixel at the switch, sampled from the originals); off: the "
-                             "proxies carry vertex colours only",
-                             "--proxy-textures"),
-                        {"on", "off"}));
+    v.push_back(
+        choices(decl("proxy_textures", "Proxy textures", T::Enum, N::Bake, std::string("on"), "",
+                     "Bake a base-colour atlas for every proxy (charts, one texel per "
+                     "pixel at the switch, sampled from the originals); off: the "
+                     "proxies carry vertex colours only",
+                     "--proxy-textures"),
+                {"on", "off"}));
     v.push_back(ranged(decl("threads", "Threads", T::Int, N::Bake, 0, "",
                             "Worker threads for baking; 0 = all hardware threads", "--threads"),
                        0, 1024));
@@ -178,13 +173,13 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
              "Compute the DLOD chain baseline row of the statistics table", "--no-dlod");
     dlod.cliNegated = true;
     v.push_back(dlod);
-    v.push_back(choices(decl("compression", "Compression", T::Enum, N::Export,
-                             std::string("meshopt"), "",
-                             "Geometry of the package's tiles: quantised and compressed "
-                             "(KHR_mesh_quantization + EXT_meshopt_compression, what 3D Tiles "
-                             "runtimes decode) or plain glTF floats",
-                             "--compression"),
-                        {"meshopt", "none"}));
+    v.push_back(
+        choices(decl("compression", "Compression", T::Enum, N::Export, std::string("meshopt"), "",
+                     "Geometry of the package's tiles: quantised and compressed "
+                     "(KHR_mesh_quantization + EXT_meshopt_compression, what 3D Tiles "
+                     "runtimes decode) or plain glTF floats",
+                     "--compression"),
+                {"meshopt", "none"}));
     ParamDecl geo = decl("geo", "Geolocation", T::Text, N::Export, std::string(), "",
                          "lat,lon,height (degrees, degrees, metres): places the root on the "
                          "globe; empty = local frame",

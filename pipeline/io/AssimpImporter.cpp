@@ -66,8 +66,8 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 // An embedded assimp texture: compressed bytes (PNG, JPEG...; mHeight 0) or raw BGRA texels.
 Texture embeddedTexture(const aiTexture* tex, const std::string& name, TexelBudget& budget) {
     if (tex->mHeight == 0) {
-        return textureFromBytes(
-            {reinterpret_cast<const std::uint8_t*>(tex->pcData), tex->mWidth}, name, &budget);
+        return textureFromBytes({reinterpret_cast<const std::uint8_t*>(tex->pcData), tex->mWidth},
+                                name, &budget);
     }
     Texture t;
     t.name = name;
@@ -76,8 +76,8 @@ Texture embeddedTexture(const aiTexture* tex, const std::string& name, TexelBudg
         t.error = name + ": " + why;
         return t;
     }
-    auto image = std::make_shared<RgbaImage>(static_cast<int>(tex->mWidth),
-                                             static_cast<int>(tex->mHeight));
+    auto image =
+        std::make_shared<RgbaImage>(static_cast<int>(tex->mWidth), static_cast<int>(tex->mHeight));
     const std::size_t n = static_cast<std::size_t>(tex->mWidth) * tex->mHeight;
     for (std::size_t i = 0; i < n; ++i) {
         const aiTexel& c = tex->pcData[i];
@@ -183,7 +183,8 @@ std::vector<std::string> firstTexturesOfMaterials(const aiScene* as, const fs::p
     if (!isAc3dPath(file)) return out;
     const std::optional<std::vector<Ac3dObject>> objects = readAc3dObjects(file);
     if (!objects || objects->size() != 1) return out; // assimp adds a root for several
-    std::vector<std::pair<const aiNode*, const Ac3dObject*>> stack{{as->mRootNode, &objects->front()}};
+    std::vector<std::pair<const aiNode*, const Ac3dObject*>> stack{
+        {as->mRootNode, &objects->front()}};
     while (!stack.empty()) {
         auto [node, object] = stack.back();
         stack.pop_back();
@@ -248,8 +249,8 @@ void importNodes(const aiScene* as, const std::vector<Id>& meshIds, Scene& scene
         auto [an, parent] = stack.back();
         stack.pop_back();
         if (++count > limits.maxInstances) {
-            throwOverLimit(file, "its node graph holds more than " + std::to_string(count - 1) +
-                                     " nodes",
+            throwOverLimit(file,
+                           "its node graph holds more than " + std::to_string(count - 1) + " nodes",
                            limits.maxInstances, "--max-instances");
         }
         const std::string name = an->mName.length ? an->mName.C_Str() : "node";
@@ -338,7 +339,8 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
     const std::vector<std::string> firstTextures = firstTexturesOfMaterials(as, file);
     std::vector<Id> materialIds;
     for (unsigned i = 0; i < as->mNumMaterials; ++i) {
-        materialIds.push_back(scene.addMaterial(materials.read(as->mMaterials[i], firstTextures[i])));
+        materialIds.push_back(
+            scene.addMaterial(materials.read(as->mMaterials[i], firstTextures[i])));
     }
     std::vector<Id> meshIds(as->mNumMeshes, kNoId);
     for (unsigned i = 0; i < as->mNumMeshes; ++i) {

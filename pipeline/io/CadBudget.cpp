@@ -91,11 +91,12 @@ double meshDeviation(const TopoDS_Face& face) {
         int a = 0, b = 0, c = 0;
         tri->Triangle(t).Get(a, b, c);
         const gp_XY uv = (tri->UVNode(a).XY() + tri->UVNode(b).XY() + tri->UVNode(c).XY()) / 3.0;
-        const gp_XYZ mid = (tri->Node(a).Transformed(trsf).XYZ() +
-                            tri->Node(b).Transformed(trsf).XYZ() +
-                            tri->Node(c).Transformed(trsf).XYZ()) /
-                           3.0;
-        deviation = std::max(deviation, surface.Value(uv.X(), uv.Y()).XYZ().Subtracted(mid).Modulus());
+        const gp_XYZ mid =
+            (tri->Node(a).Transformed(trsf).XYZ() + tri->Node(b).Transformed(trsf).XYZ() +
+             tri->Node(c).Transformed(trsf).XYZ()) /
+            3.0;
+        deviation =
+            std::max(deviation, surface.Value(uv.X(), uv.Y()).XYZ().Subtracted(mid).Modulus());
     }
     return deviation;
 }
@@ -132,9 +133,8 @@ int meshFace(const TopoDS_Face& face, double area, double faceTriangles,
     // Only for its cancel flag: this single face's own counter is not the shape's.
     Handle(Message_ProgressIndicator) indicator;
     if (progress != nullptr) indicator = progress->indicator(false);
-    BRepMesh_IncrementalMesh mesher(face, params,
-                                    indicator.IsNull() ? Message_ProgressRange()
-                                                       : indicator->Start());
+    BRepMesh_IncrementalMesh mesher(
+        face, params, indicator.IsNull() ? Message_ProgressRange() : indicator->Start());
     if (progress != nullptr) progress->throwIfCancelled();
     TopLoc_Location loc;
     const Handle(Poly_Triangulation)& tri = BRep_Tool::Triangulation(face, loc);
@@ -183,8 +183,8 @@ void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, doubl
             const double estimate = estimatedTriangles(face);
             const double area = boxArea(face);
             if (estimate <= kMinFaceTriangles || area <= 0.0) continue;
-            const double own = std::max(kMinFaceTriangles,
-                                        2.0 * area / (budget.elementSize * budget.elementSize));
+            const double own =
+                std::max(kMinFaceTriangles, 2.0 * area / (budget.elementSize * budget.elementSize));
             if (estimate <= own) continue;
             const double remaining =
                 std::max(kMinFaceTriangles, budget.fileTriangles - budget.usedTriangles);
@@ -195,8 +195,8 @@ void meshDenseFaces(const TopoDS_Shape& shape, TessellationBudget& budget, doubl
             const double deviation = meshDeviation(face);
             if (got > 0 && deviation > 2.0 * budget.linearDeflection) {
                 budget.notes.push_back(
-                    budget.file.filename().string() + ": face " + std::to_string(first + i) +
-                    " (" + surfaceName(face) + " surface, about " + number(estimate, "%.0f") +
+                    budget.file.filename().string() + ": face " + std::to_string(first + i) + " (" +
+                    surfaceName(face) + " surface, about " + number(estimate, "%.0f") +
                     " triangles unbounded) coarsened by the tessellation budget to " +
                     std::to_string(got) + " triangles: deviates up to " +
                     number(deviation * unitScale) + " m for a deflection of " +

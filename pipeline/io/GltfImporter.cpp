@@ -26,8 +26,8 @@
 #include "pipeline/core/Error.h"
 #include "pipeline/io/GltfAccessor.h"
 #include "pipeline/io/GltfMeshopt.h"
-#include "pipeline/io/Import.h"
 #include "pipeline/io/ImageDecode.h"
+#include "pipeline/io/Import.h"
 
 namespace hlod {
 
@@ -38,7 +38,7 @@ namespace {
 struct LoadContext {
     fs::path file;
     fs::path folder;
-    std::string refused; // first external path refused, for the error message
+    std::string refused;           // first external path refused, for the error message
     std::map<int, Texture> images; // decoded by the image callback, by glTF image index
     std::set<fs::path> referenced; // files read besides the scene file (buffers, images)
     TexelBudget texels;            // what this file's images may decode (ImportLimits.h)

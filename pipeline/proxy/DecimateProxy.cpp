@@ -7,8 +7,8 @@
 
 #include "pipeline/proxy/BoundedSimplify.h"
 #include "pipeline/proxy/CoveredParts.h"
-#include "pipeline/proxy/SmallParts.h"
 #include "pipeline/proxy/ProxyFinish.h"
+#include "pipeline/proxy/SmallParts.h"
 #include "pipeline/proxy/Weld.h"
 
 namespace hlod {
@@ -32,9 +32,8 @@ std::vector<std::uint32_t> dropCoveredParts(const ProxyMesh& input,
     }
     for (std::uint32_t v = 0; v < part.size(); ++v)
         part[v] = number[part[v]] == 0xffffffffu ? 0 : number[part[v]];
-    const std::vector<std::uint8_t> keep =
-        keepUncoveredParts(input.positions, input.indices, simplifiedPositions, simplified, part,
-                           parts, limit);
+    const std::vector<std::uint8_t> keep = keepUncoveredParts(
+        input.positions, input.indices, simplifiedPositions, simplified, part, parts, limit);
     std::size_t out = 0;
     for (std::size_t t = 0; t + 2 < simplified.size(); t += 3) {
         if (!keep[part[simplified[t]]]) continue;

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <tuple>
-#include <cstdlib>
 #include <unordered_map>
 
 #include "pipeline/proxy/SurfaceQuery.h"
@@ -199,18 +199,20 @@ private:
         for (std::size_t t = 0; t < triangles; ++t) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint32_t a = tris_[3 * t + k], b = tris_[3 * t + (k + 1) % 3];
-                edges_[fill_[std::min(a, b)]++] = HalfEdge{std::min(a, b), std::max(a, b),
-                                                           static_cast<std::uint32_t>(t), a < b};
+                edges_[fill_[std::min(a, b)]++] =
+                    HalfEdge{std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t), a < b};
             }
         }
         for (std::size_t v = 0; v + 1 < edgeStart_.size(); ++v) {
-            const auto first = edges_.begin() + edgeStart_[v], last = edges_.begin() + edgeStart_[v + 1];
+            const auto first = edges_.begin() + edgeStart_[v],
+                       last = edges_.begin() + edgeStart_[v + 1];
             if (last - first < 2) continue;
             // Insertion sort: buckets are a vertex's edges, a handful.
             for (auto i = first + 1; i < last; ++i) {
                 const HalfEdge e = *i;
                 auto j = i;
-                for (; j > first && std::tie(e.hi, e.tri) < std::tie((j - 1)->hi, (j - 1)->tri); --j)
+                for (; j > first && std::tie(e.hi, e.tri) < std::tie((j - 1)->hi, (j - 1)->tri);
+                     --j)
                     *j = *(j - 1);
                 *j = e;
             }
@@ -263,19 +265,21 @@ private:
     void classify() {
         featureEdges_.assign(pos_.size(), 0);
         // Bounded mode tells only locked vertices from the others (mayMove).
-        if (!bounded_) forEachEdge([&](std::size_t first, std::size_t last) {
-            if (!isFeature(first, last)) return;
-            for (std::uint32_t v : {edges_[first].lo, edges_[first].hi})
-                featureEdges_[v] = static_cast<std::uint8_t>(std::min(featureEdges_[v] + 1, 255));
-        });
+        if (!bounded_)
+            forEachEdge([&](std::size_t first, std::size_t last) {
+                if (!isFeature(first, last)) return;
+                for (std::uint32_t v : {edges_[first].lo, edges_[first].hi})
+                    featureEdges_[v] =
+                        static_cast<std::uint8_t>(std::min(featureEdges_[v] + 1, 255));
+            });
         kinds_.resize(pos_.size());
         for (std::uint32_t v = 0; v < pos_.size(); ++v) {
             const std::uint8_t f = featureEdges_[v];
             const bool lock = v < locked_.size() && locked_[v] != 0;
-            kinds_[v] = lock                     ? Kind::Locked
-                        : f != 0 && f != 2       ? Kind::Fixed
-                        : f == 2                 ? Kind::Feature
-                                                 : Kind::Interior;
+            kinds_[v] = lock               ? Kind::Locked
+                        : f != 0 && f != 2 ? Kind::Fixed
+                        : f == 2           ? Kind::Feature
+                                           : Kind::Interior;
         }
     }
 
@@ -513,7 +517,8 @@ private:
     // The centroids of a k x k subdivision of triangle abc, k = its longest edge over the limit
     // (1 to 6): points about a limit apart across the triangle.
     template <class F>
-    void forEachSample(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, F&& visit) const {
+    void forEachSample(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d,
+                       F&& visit) const {
         const float longest = std::sqrt(
             std::max({glm::dot(b - a, b - a), glm::dot(d - b, d - b), glm::dot(a - d, a - d)}));
         const int n = std::clamp(static_cast<int>(std::ceil(longest / limit_)), 1, 6);

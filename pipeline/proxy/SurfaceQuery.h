@@ -30,9 +30,8 @@
 
 namespace hlod::surface {
 
-
-[[gnu::always_inline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
-                                        const glm::vec3& c) {
+[[gnu::always_inline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a,
+                                                    const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
     const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
     glm::vec3 q;
@@ -139,17 +138,18 @@ inline unsigned withinMask4(const Triangle& tri, const Points4& p, float limit2)
     const float reach2 = reachSquared(limit2);
     const __m128 px = _mm_load_ps(p.x), py = _mm_load_ps(p.y), pz = _mm_load_ps(p.z);
     auto dot = [](const glm::vec3& n, __m128 x, __m128 y, __m128 z) {
-        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(n.x), x), _mm_mul_ps(_mm_set1_ps(n.y), y)),
-                          _mm_mul_ps(_mm_set1_ps(n.z), z));
+        return _mm_add_ps(
+            _mm_add_ps(_mm_mul_ps(_mm_set1_ps(n.x), x), _mm_mul_ps(_mm_set1_ps(n.y), y)),
+            _mm_mul_ps(_mm_set1_ps(n.z), z));
     };
     const __m128 zero = _mm_setzero_ps();
     const __m128 s = _mm_sub_ps(dot(tri.plane.n, px, py, pz), _mm_set1_ps(tri.plane.offset));
     __m128 rejected = _mm_cmpgt_ps(_mm_mul_ps(s, s), _mm_set1_ps(reach2 * tri.plane.n2));
     for (const Plane& e : tri.edge) {
         const __m128 d = _mm_sub_ps(dot(e.n, px, py, pz), _mm_set1_ps(e.offset));
-        rejected = _mm_or_ps(rejected, _mm_and_ps(_mm_cmpgt_ps(d, zero),
-                                                  _mm_cmpgt_ps(_mm_mul_ps(d, d),
-                                                               _mm_set1_ps(reach2 * e.n2))));
+        rejected = _mm_or_ps(
+            rejected, _mm_and_ps(_mm_cmpgt_ps(d, zero),
+                                 _mm_cmpgt_ps(_mm_mul_ps(d, d), _mm_set1_ps(reach2 * e.n2))));
     }
     if (_mm_movemask_ps(rejected) == 0xf) return 0u;
     // distanceSquared, lane-wise.
@@ -188,8 +188,8 @@ inline unsigned withinMask4(const Triangle& tri, const Points4& p, float limit2)
     for (int k = 0; k < 3; ++k) {
         const __m128 ak = _mm_set1_ps(a[k]), bk = _mm_set1_ps(b[k]), ck = _mm_set1_ps(c[k]);
         const __m128 abk = _mm_set1_ps(ab[k]), ack = _mm_set1_ps(ac[k]);
-        __m128 r = select(inside,
-                          _mm_add_ps(_mm_add_ps(ak, _mm_mul_ps(abk, v)), _mm_mul_ps(ack, w)), ak);
+        __m128 r =
+            select(inside, _mm_add_ps(_mm_add_ps(ak, _mm_mul_ps(abk, v)), _mm_mul_ps(ack, w)), ak);
         r = select(c6, _mm_add_ps(bk, _mm_mul_ps(_mm_set1_ps(cb[k]), t6)), r);
         r = select(c5, _mm_add_ps(ak, _mm_mul_ps(ack, t5)), r);
         r = select(c4, _mm_add_ps(ak, _mm_mul_ps(abk, t4)), r);
@@ -220,7 +220,7 @@ struct GridFrame {
 // about as many cells as the grid holds triangles (more cells only cost memory to clear and
 // prefix-sum: measured, a 128^3 grid per check was 40% of a bake).
 inline GridFrame frameFor(std::span<const glm::vec3> positions, std::span<const std::uint32_t> a,
-                   float limit, std::size_t triangles) {
+                          float limit, std::size_t triangles) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (std::uint32_t v : a) {
         lo = glm::min(lo, positions[v]);
@@ -412,8 +412,8 @@ public:
                                   _mm_mul_ps(_mm_loadu_ps(&ny_[first]), _mm_set1_ps(p.y))),
                        _mm_mul_ps(_mm_loadu_ps(&nz_[first]), _mm_set1_ps(p.z))),
             _mm_loadu_ps(&offset_[first]));
-        const __m128 rejected =
-            _mm_cmpgt_ps(_mm_mul_ps(s, s), _mm_mul_ps(_mm_set1_ps(reach2), _mm_loadu_ps(&n2_[first])));
+        const __m128 rejected = _mm_cmpgt_ps(
+            _mm_mul_ps(s, s), _mm_mul_ps(_mm_set1_ps(reach2), _mm_loadu_ps(&n2_[first])));
         return ~static_cast<unsigned>(_mm_movemask_ps(rejected)) & valid;
 #else
         unsigned pass = 0;
@@ -644,8 +644,8 @@ private:
         // largest distance from its centroid g to a corner, d(g) at most the distance to any
         // one triangle (first the corners', then the nearest).
         const glm::vec3 g = (a.p + b.p + c.p) / 3.0f;
-        const float r = std::sqrt(std::max({glm::dot(a.p - g, a.p - g), glm::dot(b.p - g, b.p - g),
-                                            glm::dot(c.p - g, c.p - g)}));
+        const float r = std::sqrt(std::max(
+            {glm::dot(a.p - g, a.p - g), glm::dot(b.p - g, b.p - g), glm::dot(c.p - g, c.p - g)}));
         const float limit = surface_.limit();
         if (r < limit) {
             for (int k = 0; k < 3; ++k)
@@ -662,13 +662,15 @@ private:
             return false;
         }
         // Bisect the longest edge; the midpoint is located once for both halves.
-        Corner m{longest == ab ? (a.p + b.p) * 0.5f
+        Corner m{longest == ab   ? (a.p + b.p) * 0.5f
                  : longest == bc ? (b.p + c.p) * 0.5f
                                  : (c.p + a.p) * 0.5f,
                  kNoTriangle};
         if (!locate(m, failAt)) return false;
-        if (longest == ab) return piece(a, m, c, depth + 1, failAt) && piece(m, b, c, depth + 1, failAt);
-        if (longest == bc) return piece(a, b, m, depth + 1, failAt) && piece(a, m, c, depth + 1, failAt);
+        if (longest == ab)
+            return piece(a, m, c, depth + 1, failAt) && piece(m, b, c, depth + 1, failAt);
+        if (longest == bc)
+            return piece(a, b, m, depth + 1, failAt) && piece(a, m, c, depth + 1, failAt);
         return piece(a, b, m, depth + 1, failAt) && piece(m, b, c, depth + 1, failAt);
     }
 
@@ -676,6 +678,5 @@ private:
     float slack2_;
     int budget_ = 0;
 };
-
 
 } // namespace hlod::surface

@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstring>
-#include <iterator>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <set>
 #include <string>
@@ -161,18 +161,18 @@ TEST(Bench, PackageDrawCountsWhatThePackageHolds) {
     // the summary says which count it is. --draw nodes draws one per selected node.
     if (!haveDisplay()) GTEST_SKIP() << "needs an X display (run under xvfb-run)";
     TempOut out;
-    const auto built = runCli({"build", "-o", (out.path / "pkg").string(), "--threads", "2",
-                               "--no-cache"},
-                              600, 8ull << 30);
+    const auto built =
+        runCli({"build", "-o", (out.path / "pkg").string(), "--threads", "2", "--no-cache"}, 600,
+               8ull << 30);
     ASSERT_EQ(built.exitCode, 0) << built.err;
     const std::size_t primitives = packagePrimitives(out.path / "pkg");
     ASSERT_GT(primitives, 0u);
     for (const char* draw : {"package", "nodes"}) {
         const fs::path o = out.path / draw;
-        const auto r = runCli({"bench", "--out", o.string(), "--frames", "6", "--size", "320x180",
-                               "--threads", "2", "--no-cache", "--configs", "original,sphere",
-                               "--draw", draw},
-                              600, 8ull << 30);
+        const auto r =
+            runCli({"bench", "--out", o.string(), "--frames", "6", "--size", "320x180", "--threads",
+                    "2", "--no-cache", "--configs", "original,sphere", "--draw", draw},
+                   600, 8ull << 30);
         ASSERT_EQ(r.exitCode, 0) << r.err;
         std::ifstream in(o / "summary.json");
         EXPECT_EQ(nlohmann::json::parse(in)["hlod_draw"], draw);

@@ -70,8 +70,7 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     // less such a root.
     std::size_t meshes = 0;
     for (Id n = 0; n < tree.nodes.size(); ++n)
-        if (tree.nodes[n].isLeaf() || built.build->bake.nodes[n].hasProxy)
-            ++meshes;
+        if (tree.nodes[n].isLeaf() || built.build->bake.nodes[n].hasProxy) ++meshes;
     EXPECT_EQ(meshes, tree.nodes.size() - (rootHasNoProxy(tree, built.build->bake) ? 1 : 0));
     EXPECT_EQ(built.hlod.meshes, meshes);
     EXPECT_EQ(built.hlod.version, "HLOD, sphere");

@@ -9,7 +9,6 @@
 #include <memory>
 #include <tuple>
 
-#include <glm/gtc/matrix_inverse.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -23,6 +22,7 @@
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/DlodChain.h"
 #include "pipeline/proxy/ProxyEconomy.h"
+#include "pipeline/scene/AppendPlaced.h"
 #include "pipeline/select/CameraPath.h"
 #include "pipeline/select/LodSelection.h"
 
@@ -49,7 +49,7 @@ struct Config {
     };
     std::unique_ptr<PackageLayout> layout;
     std::vector<ContentDraw> contentDraws; // parallel to layout->contents
-    std::deque<Mesh> mergedMeshes;         // leaf groups' merged primitives (renderer keys by address)
+    std::deque<Mesh> mergedMeshes; // leaf groups' merged primitives (renderer keys by address)
     // Original / DLOD: per instance, per level (Original: level 0 only)
     std::vector<std::vector<int>> instanceDrawables;
 };
@@ -97,28 +97,6 @@ MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh&
             look.texture,      static_cast<int>(look.alphaMode),
             look.alphaCutoff,  !mesh.normals.empty(),
             !mesh.uvs.empty(), !mesh.colors.empty()};
-}
-
-// Appends `mesh` placed by `world` to `out` (normals by the inverse transpose, the winding
-// flipped by a mirror), as TileContent.cpp merges a leaf group's leaves.
-void appendPlaced(Mesh& out, const Mesh& mesh, const glm::dmat4& world) {
-    const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(world));
-    const auto base = static_cast<std::uint32_t>(out.positions.size());
-    for (const glm::vec3& v : mesh.positions)
-        out.positions.push_back(glm::vec3(world * glm::dvec4(glm::dvec3(v), 1.0)));
-    for (const glm::vec3& n : mesh.normals) {
-        const glm::dvec3 t = normalMatrix * glm::dvec3(n);
-        const double len = glm::length(t);
-        out.normals.push_back(len > 0.0 ? glm::vec3(t / len) : glm::vec3(0, 1, 0));
-    }
-    out.uvs.insert(out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
-    out.colors.insert(out.colors.end(), mesh.colors.begin(), mesh.colors.end());
-    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        out.indices.push_back(base + mesh.indices[t]);
-        out.indices.push_back(base + mesh.indices[t + (mirrored ? 2 : 1)]);
-        out.indices.push_back(base + mesh.indices[t + (mirrored ? 1 : 2)]);
-    }
 }
 
 // The package's contents as drawables: a proxy draws its node's proxy; a leaf group draws its
@@ -268,11 +246,10 @@ void runBench(const Scene& scene, const BenchOptions& o) {
         tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
         std::fprintf(stderr, "dlod: building chains for %zu meshes\n", scene.meshes.size());
         arena.execute([&] {
-            tbb::parallel_for(std::size_t(0), scene.meshes.size(),
-                              [&](std::size_t m) {
-                                  chains[m] = buildDlodChain(scene.meshes[m]);
-                                  deviations[m] = dlodDeviations(scene.meshes[m], chains[m]);
-                              });
+            tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t m) {
+                chains[m] = buildDlodChain(scene.meshes[m]);
+                deviations[m] = dlodDeviations(scene.meshes[m], chains[m]);
+            });
         });
         DlodSummary summary;
         for (const MeshInstance& inst : scene.instances) {
@@ -306,8 +283,8 @@ void runBench(const Scene& scene, const BenchOptions& o) {
         instCenter[i] = b.center();
         instRadius[i] = b.diagonal() * 0.5;
         const glm::dmat3 linear(scene.instanceTransform(i));
-        instScale[i] = std::max({glm::length(linear[0]), glm::length(linear[1]),
-                                 glm::length(linear[2])});
+        instScale[i] =
+            std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
         const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
         instColor[i] = mesh.material < scene.materials.size()
                            ? scene.materials[mesh.material].effectiveColor()
@@ -343,8 +320,8 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                     if (tris[n] > 0) c.nodeDrawable[n] = renderer.addProxy(c.layer, proxy);
                 }
             }
-            c.selection = std::make_unique<SelectionTree>(
-                tree, std::move(tris), rootHasNoProxy(tree, c.build->bake));
+            c.selection = std::make_unique<SelectionTree>(tree, std::move(tris),
+                                                          rootHasNoProxy(tree, c.build->bake));
             c.cache = std::make_unique<FrontCache>(*c.selection);
             if (o.draw == HlodDraw::Package)
                 addPackageDrawables(c, scene, renderer, instColor, instLook);
@@ -411,7 +388,8 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                         const double d = glm::length(instCenter[i] - cam.eye);
                         const std::vector<double>& dev = deviations[scene.instances[i].mesh];
                         for (int l = 1; l <= levels; ++l) {
-                            const double world = dev[static_cast<std::size_t>(l - 1)] * instScale[i];
+                            const double world =
+                                dev[static_cast<std::size_t>(l - 1)] * instScale[i];
                             if (world * ppu <= dlodPixelError * d) level = l;
                         }
                     }

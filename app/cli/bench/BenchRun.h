@@ -52,8 +52,8 @@ struct BenchOptions {
     int height = 360;
     std::vector<std::string> configs; // keys: original dlod sphere aabb0 aabb1 aabb2 octree
     double screenSize = 300.0;        // bake S at the 1080 px reference viewport
-    double proxyRatio = BakeParams{}.proxyRatio;     // rho of the proxy economy (ProxyBaker.h)
-    double levelGrowth = kDefaultLevelGrowth;        // LevelGrowth.h
+    double proxyRatio = BakeParams{}.proxyRatio; // rho of the proxy economy (ProxyBaker.h)
+    double levelGrowth = kDefaultLevelGrowth;    // LevelGrowth.h
     std::optional<std::filesystem::path> pathFile;
     int threads = 0;
     Shading shading = Shading::Geometry;

@@ -229,8 +229,10 @@ TEST(PackageCompact, SmallSubtreesJoinTheirParentsLeafGroup) {
     for (int i = 0; i < 64; ++i)
         s.addInstance(post, s.addNode("post" + std::to_string(i), 0,
                                       glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5, 0, 0))));
-    s.addInstance(ball, s.addNode("west", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(-5, 0, 0))));
-    s.addInstance(ball, s.addNode("east", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(100, 0, 0))));
+    s.addInstance(ball,
+                  s.addNode("west", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(-5, 0, 0))));
+    s.addInstance(ball,
+                  s.addNode("east", 0, glm::translate(glm::dmat4(1.0), glm::dvec3(100, 0, 0))));
     s.updateWorldTransforms();
     const Build b(std::move(s));
     const PackageLayout layout = planPackage(b.scene, b.tree, b.bake);

@@ -148,6 +148,15 @@ Error writeError(const std::function<void()>& f) {
     return Error(ErrorCode::Io, "none");
 }
 
+// A cache entry's mesh: one white triangle.
+ProxyMesh oneTriangle() {
+    ProxyMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.colors.assign(3, glm::u8vec4(255));
+    mesh.indices = {0, 1, 2};
+    return mesh;
+}
+
 } // namespace
 
 TEST(WriteFaults, ExportOnAFullDiskFailsOnceAndKeepsThePreviousPackage) {
@@ -169,8 +178,7 @@ TEST(WriteFaults, ExportOnAFullDiskFailsOnceAndKeepsThePreviousPackage) {
     EXPECT_EQ(e.file(), fs::absolute(pkg).lexically_normal());
     const std::string reason = folder.mounted() ? "No space left on device" : "File too large";
     EXPECT_NE(e.problem().find(reason), std::string::npos) << e.what();
-    EXPECT_NE(e.problem().find("the previous package is unchanged"), std::string::npos)
-        << e.what();
+    EXPECT_NE(e.problem().find("the previous package is unchanged"), std::string::npos) << e.what();
     EXPECT_EQ(e.problem().find('\n'), std::string::npos); // one line
     EXPECT_EQ(snapshot(pkg), before);
     EXPECT_EQ(entries(folder.path()), siblings + (folder.mounted() ? 1 : 0)); // + the filler
@@ -183,8 +191,7 @@ TEST(WriteFaults, ExportIntoAReadOnlyFolderFailsAndKeepsThePreviousPackage) {
     writePackage(pkg, b.scene, b.tree, b.bake, b.params, {});
     const auto before = snapshot(pkg);
     if (!folder.makeReadOnly()) GTEST_SKIP() << "cannot make a read-only folder here";
-    const Error e =
-        writeError([&] { writePackage(pkg, b.scene, b.tree, b.other, b.params, {}); });
+    const Error e = writeError([&] { writePackage(pkg, b.scene, b.tree, b.other, b.params, {}); });
     folder.makeWritable();
     EXPECT_EQ(e.code(), ErrorCode::Io);
     EXPECT_EQ(e.file(), fs::absolute(pkg).lexically_normal());
@@ -198,10 +205,7 @@ TEST(WriteFaults, ExportIntoAReadOnlyFolderFailsAndKeepsThePreviousPackage) {
 TEST(WriteFaults, CacheStoreOnAFullDiskFailsAndKeepsTheEntriesItHad) {
     FaultFolder folder;
     const ProxyCache cache(folder / "cache");
-    ProxyMesh mesh;
-    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    mesh.colors.assign(3, glm::u8vec4(255));
-    mesh.indices = {0, 1, 2};
+    ProxyMesh mesh = oneTriangle();
     cache.store(1, mesh);
     const auto before = snapshot(folder / "cache");
     mesh.positions.resize(30000, glm::vec3(0.5f)); // a bigger entry than the space left
@@ -225,10 +229,7 @@ TEST(WriteFaults, CacheStoreOnAFullDiskFailsAndKeepsTheEntriesItHad) {
 TEST(WriteFaults, CacheStoreIntoAReadOnlyFolderFailsAndKeepsTheEntries) {
     FaultFolder folder;
     const ProxyCache cache(folder / "cache");
-    ProxyMesh mesh;
-    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-    mesh.colors.assign(3, glm::u8vec4(255));
-    mesh.indices = {0, 1, 2};
+    ProxyMesh mesh = oneTriangle();
     cache.store(1, mesh);
     const auto before = snapshot(folder / "cache");
     if (!folder.mounted()) {

@@ -21,15 +21,14 @@ namespace fs = std::filesystem;
 using Target = std::function<void(const std::uint8_t*, std::size_t)>;
 
 const std::map<std::string, Target>& targets() {
-    static const std::map<std::string, Target> t = {
-        {"gltf", hlod::fuzz::gltf},
-        {"scene", hlod::fuzz::scene},
-        {"camera_path", hlod::fuzz::cameraPath},
+    static const std::map<std::string, Target> t = {{"gltf", hlod::fuzz::gltf},
+                                                    {"scene", hlod::fuzz::scene},
+                                                    {"camera_path", hlod::fuzz::cameraPath},
 #ifndef HLOD_FUZZ_NO_PROJECT
-        {"project", hlod::fuzz::project},
+                                                    {"project", hlod::fuzz::project},
 #endif
-        {"proxy_cache", hlod::fuzz::proxyCache},
-        {"package", hlod::fuzz::package}};
+                                                    {"proxy_cache", hlod::fuzz::proxyCache},
+                                                    {"package", hlod::fuzz::package}};
     return t;
 }
 
@@ -61,8 +60,8 @@ TEST_P(FuzzRegression, EveryCheckedInInputIsRefusedCleanlyOrRead) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegression,
-                         ::testing::Values("gltf", "scene", "camera_path", "project",
-                                           "proxy_cache", "package"),
+                         ::testing::Values("gltf", "scene", "camera_path", "project", "proxy_cache",
+                                           "package"),
                          [](const auto& p) { return p.param; });
 
 } // namespace

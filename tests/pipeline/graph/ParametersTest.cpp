@@ -20,11 +20,10 @@ using test::problemOf;
 TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
     // The flags `hlod build` has always taken (README "Command-line tool").
     const std::set<std::string> flags{
-        "--volume",      "--k",           "--max-children", "--proxy",
-        "--screen-size", "--pixel-error", "--fov",          "--viewport-height",
-        "--threads",     "--cache",       "--no-cache",     "--no-dlod",
-        "--deflection",  "--brep-unit",   "--geo",          "-o",
-        "--compression", "--proxy-textures", "--proxy-ratio", "--level-growth",
+        "--volume", "--k", "--max-children", "--proxy", "--screen-size", "--pixel-error", "--fov",
+        "--viewport-height", "--threads", "--cache", "--no-cache", "--no-dlod", "--deflection",
+        "--brep-unit", "--geo", "-o", "--compression", "--proxy-textures", "--proxy-ratio",
+        "--level-growth",
         // The import budget (ImportLimits.h, issue 22).
         "--max-triangles", "--max-unique-triangles", "--max-instances", "--max-texels"};
     std::set<std::string> keys, declared;

@@ -77,8 +77,7 @@ TEST(CadBudget, DenseBsplineFaceInAStepFileIsBudgetedToo) {
     test::TempDir dir;
     test::writeDenseBsplineBrep(dir / "terrain.brep", 256, 10000.0);
     STEPControl_Writer writer;
-    ASSERT_EQ(writer.Transfer(readShape(dir / "terrain.brep"), STEPControl_AsIs),
-              IFSelect_RetDone);
+    ASSERT_EQ(writer.Transfer(readShape(dir / "terrain.brep"), STEPControl_AsIs), IFSelect_RetDone);
     ASSERT_EQ(writer.Write((dir / "terrain.step").string().c_str()), IFSelect_RetDone);
     const Scene scene = importCad(dir / "terrain.step", {});
     EXPECT_LT(scene.stats().triangles, 48'000u); // the same budget as the BREP above
@@ -107,12 +106,11 @@ TEST(CadBudget, FacesWithinTheirBudgetAreMeshedExactlyAsWithout) {
 
 TEST(CadBudget, KitchenSolidsGetNoNotes) {
     // Planes, cylinders and a few small B-splines: nothing near a budget.
-    const Scene scene =
-        importScene({test::dataDir() / "scenes/occt-kitchen"}, [] {
-            ImportOptions o;
-            o.cadBrepUnitMetres = 0.01;
-            return o;
-        }());
+    const Scene scene = importScene({test::dataDir() / "scenes/occt-kitchen"}, [] {
+        ImportOptions o;
+        o.cadBrepUnitMetres = 0.01;
+        return o;
+    }());
     EXPECT_GT(scene.stats().triangles, 0u);
     EXPECT_TRUE(scene.importNotes.empty());
 }

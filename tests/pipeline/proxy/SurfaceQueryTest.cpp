@@ -17,18 +17,26 @@ Triangle randomTriangle(std::mt19937& rng) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::uniform_int_distribution<int> kind(0, 5);
     const float scale = std::pow(10.0f, std::uniform_real_distribution<float>(-2.0f, 2.0f)(rng));
-    const glm::vec3 at =
-        glm::vec3(unit(rng), unit(rng), unit(rng)) *
-        std::pow(10.0f, std::uniform_real_distribution<float>(-1.0f, 3.0f)(rng));
+    const glm::vec3 at = glm::vec3(unit(rng), unit(rng), unit(rng)) *
+                         std::pow(10.0f, std::uniform_real_distribution<float>(-1.0f, 3.0f)(rng));
     const glm::vec3 a = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
     glm::vec3 b = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
     glm::vec3 c = at + glm::vec3(unit(rng), unit(rng), unit(rng)) * scale;
     switch (kind(rng)) {
-    case 1: c = a + (b - a) * 0.37f + glm::vec3(unit(rng)) * scale * 1e-4f; break; // sliver
-    case 2: c = a + (b - a) * 0.61f; break;                                          // collinear
-    case 3: b = a; break;                                                            // two equal
-    case 4: b = a, c = a; break;                                                     // a point
-    default: break;
+    case 1:
+        c = a + (b - a) * 0.37f + glm::vec3(unit(rng)) * scale * 1e-4f;
+        break; // sliver
+    case 2:
+        c = a + (b - a) * 0.61f;
+        break; // collinear
+    case 3:
+        b = a;
+        break; // two equal
+    case 4:
+        b = a, c = a;
+        break; // a point
+    default:
+        break;
     }
     return makeTriangle(a, b, c);
 }
@@ -50,7 +58,8 @@ TEST(SurfaceQuery, WithinMask4AnswersAsWithinLaneByLane) {
     for (int i = 0; i < 40000; ++i) {
         const Triangle tri = randomTriangle(rng);
         const float extent = glm::length(tri.b - tri.a) + glm::length(tri.c - tri.a) + 1e-3f;
-        const float limit = extent * std::pow(10.0f, std::uniform_real_distribution<float>(-3.0f, 0.5f)(rng));
+        const float limit =
+            extent * std::pow(10.0f, std::uniform_real_distribution<float>(-3.0f, 0.5f)(rng));
         for (int round = 0; round < 8; ++round) {
             Points4 p;
             glm::vec3 q[4];
@@ -153,9 +162,9 @@ TEST(SurfaceQuery, GridQueriesAnswerAsEveryTriangle) {
         const glm::vec3 r = p + glm::vec3(d(rng), d(rng), d(rng));
         bool common = false;
         for (std::size_t t = 0; t < s.indices.size() && !common; t += 3) {
-            const Triangle tri = makeTriangle(s.positions[s.indices[t]],
-                                              s.positions[s.indices[t + 1]],
-                                              s.positions[s.indices[t + 2]]);
+            const Triangle tri =
+                makeTriangle(s.positions[s.indices[t]], s.positions[s.indices[t + 1]],
+                             s.positions[s.indices[t + 2]]);
             common = within(tri, p, limit * limit) && within(tri, q, limit * limit) &&
                      within(tri, r, limit * limit);
         }
