@@ -1,6 +1,8 @@
 // Aggregation of a node's children into one world-space soup (thesis 5.3), see Aggregate.h.
 #include "pipeline/proxy/Aggregate.h"
 
+#include <algorithm>
+
 namespace hlod {
 
 namespace {
@@ -52,6 +54,7 @@ void appendProxy(const AggregatePart& part, const glm::dvec3& origin, ProxyMesh&
     }
     for (std::uint32_t i : proxy.indices)
         out.indices.push_back(first + i);
+    out.errorBound = std::max(out.errorBound, proxy.errorBound);
 }
 
 } // namespace

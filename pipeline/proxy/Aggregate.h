@@ -3,7 +3,8 @@
 // proxy, never the whole original subtree again, so the cost of a node does not grow with the
 // depth of the tree.
 //
-// Output: one triangle soup in the node's frame (positions relative to `origin`), colours per
+// Output: one triangle soup in the node's frame (positions relative to `origin`), its error
+// bound the largest of its proxies' (ProxyMesh.h; 0 for original meshes), colours per
 // vertex standing in for the replaced materials: Material::effectiveColor() (base colour times
 // the mean colour of the base colour texture) times the mesh's own vertex colour. Normals are
 // left empty (proxy methods recompute them). Instances whose transform mirrors (negative

@@ -36,22 +36,14 @@ void patch(std::span<const glm::vec3> positions, std::span<const std::uint32_t> 
 
 } // namespace
 
-BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positions,
-                                              std::span<const std::uint32_t> indices,
-                                              double maxError,
-                                              const BoundedSimplifyOptions& options,
-                                              BoundedSimplifyStats* stats) {
-    BoundedSimplifyStats local;
-    BoundedSimplifyStats& st = stats ? *stats : local;
-    st = BoundedSimplifyStats{};
+namespace {
+
+// The final check and repair of a bounded simplification `r` of the input (BoundedSimplify.h).
+BoundedSimplifyResult checkAndPatch(std::span<const glm::vec3> positions,
+                                    std::span<const std::uint32_t> indices, double maxError,
+                                    QuadricSimplifyResult r, BoundedSimplifyStats& st) {
     BoundedSimplifyResult input{
         {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
-    if (indices.empty() || !(maxError > 0.0)) {
-        st.unchanged = true;
-        return input;
-    }
-    QuadricSimplifyResult r =
-        simplifyWithQuadrics(positions, indices, {}, options.targetFraction * maxError, maxError);
     if (r.indices.size() == indices.size()) { // nothing collapsed: unchanged
         st.unchanged = true;
         return input;
@@ -70,6 +62,46 @@ BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positio
     }
     patch(positions, indices, violations.originalTriangles, out);
     return out;
+}
+
+} // namespace
+
+BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positions,
+                                              std::span<const std::uint32_t> indices,
+                                              double maxError,
+                                              const BoundedSimplifyOptions& options,
+                                              BoundedSimplifyStats* stats) {
+    BoundedSimplifyStats local;
+    BoundedSimplifyStats& st = stats ? *stats : local;
+    st = BoundedSimplifyStats{};
+    if (indices.empty() || !(maxError > 0.0)) {
+        st.unchanged = true;
+        return BoundedSimplifyResult{
+            {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
+    }
+    return checkAndPatch(
+        positions, indices, maxError,
+        simplifyWithQuadrics(positions, indices, {}, options.targetFraction * maxError, maxError),
+        st);
+}
+
+BoundedSimplifyResult simplifyWithinDeviationFrom(std::span<const glm::vec3> positions,
+                                                  std::span<const std::uint32_t> indices,
+                                                  const QuadricStart& start, double maxError,
+                                                  const BoundedSimplifyOptions& options,
+                                                  BoundedSimplifyStats* stats) {
+    BoundedSimplifyStats local;
+    BoundedSimplifyStats& st = stats ? *stats : local;
+    st = BoundedSimplifyStats{};
+    if (indices.empty() || !(maxError > 0.0)) {
+        st.unchanged = true;
+        return BoundedSimplifyResult{
+            {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
+    }
+    return checkAndPatch(positions, indices, maxError,
+                         simplifyWithQuadricsFrom(positions, indices, start,
+                                                  options.targetFraction * maxError, maxError),
+                         st);
 }
 
 } // namespace hlod

@@ -31,6 +31,8 @@
 
 #include <glm/glm.hpp>
 
+#include "pipeline/proxy/QuadricSimplify.h"
+
 namespace hlod {
 
 struct BoundedSimplifyOptions {
@@ -55,5 +57,13 @@ BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positio
                                               double maxError,
                                               const BoundedSimplifyOptions& options = {},
                                               BoundedSimplifyStats* stats = nullptr);
+
+// The same, continuing from `start` (a simplification of the input within maxError of it both
+// ways, over the input's vertex numbering, QuadricSimplify.h), certified against the input.
+BoundedSimplifyResult simplifyWithinDeviationFrom(std::span<const glm::vec3> positions,
+                                                  std::span<const std::uint32_t> indices,
+                                                  const QuadricStart& start, double maxError,
+                                                  const BoundedSimplifyOptions& options = {},
+                                                  BoundedSimplifyStats* stats = nullptr);
 
 } // namespace hlod

@@ -6,6 +6,7 @@
 #include <meshoptimizer.h>
 
 #include "pipeline/proxy/BoundedSimplify.h"
+#include "pipeline/proxy/CertifiedSimplify.h"
 #include "pipeline/proxy/CoveredParts.h"
 #include "pipeline/proxy/ProxyFinish.h"
 #include "pipeline/proxy/SmallParts.h"
@@ -14,6 +15,10 @@
 namespace hlod {
 
 namespace {
+
+// See decimateProxy: a node whose proxy keeps more than this share of its input is left at
+// the cheaper steps (proxy ratios above it are accepted, but only 0.35 is the default).
+constexpr double kHopeless = 0.6;
 
 // The simplified triangles of the parts CoveredParts.h keeps. `copies` are the input vertices
 // that the simplified vertices past the input's copy (BoundedSimplify.h).
@@ -64,18 +69,44 @@ std::vector<std::uint32_t> simplifyToError(const ProxyMesh& mesh, double maxErro
 ProxyMesh decimateProxy(ProxyMesh input, double maxError, const DecimateOptions& options) {
     const auto e = static_cast<float>(maxError);
     const float wf = options.weldFraction;
+    // The input lies within its own error bound of the original meshes (ProxyMesh.h) and
+    // welding moves a vertex by at most sqrt(3) * tolerance more: the simplification gets what
+    // is left of the budget.
+    const double limit = maxError - double(input.errorBound) - std::sqrt(3.0) * double(e * wf);
     weldCorners(input, WeldOptions{e * wf, false, true});
     dropSmallParts(input, e);
-    const double limit = maxError * (1.0 - std::sqrt(3.0) * wf);
-    BoundedSimplifyResult simplified =
-        simplifyWithinDeviation(input.positions, input.indices, limit);
-    input.indices = dropCoveredParts(input, simplified.positions, std::move(simplified.indices),
-                                     simplified.copies, limit);
-    input.positions = std::move(simplified.positions);
-    for (std::uint32_t v : simplified.copies)
-        input.colors.push_back(input.colors[v]);
+    if (limit > 0.0 && !input.indices.empty()) {
+        const std::size_t triangles = input.triangleCount();
+        // A proxy that keeps more than kHopeless of its input cannot pay for itself under any
+        // useful proxy ratio; it is finished early, still certified (DecimateProxy.h).
+        const auto hopeless = [&](std::size_t kept) {
+            return static_cast<double>(kept) > kHopeless * static_cast<double>(triangles);
+        };
+        if (!hopeless(simplifyToError(input, limit).size() / 3)) {
+            // Collapses certified by mapping as far as they go, then by the distance test
+            // against the input, which goes on where the mapping's added moves stop.
+            const CertifiedSimplifyResult mapped =
+                simplifyCertified(input.positions, input.indices, {}, limit);
+            BoundedSimplifyResult simplified;
+            if (hopeless(mapped.indices.size() / 3)) {
+                simplified.positions = mapped.positions;
+                simplified.indices = mapped.indices;
+            } else {
+                simplified = simplifyWithinDeviationFrom(
+                    input.positions, input.indices,
+                    QuadricStart{mapped.positions, mapped.indices, mapped.representative}, limit);
+            }
+            input.indices =
+                dropCoveredParts(input, simplified.positions, std::move(simplified.indices),
+                                 simplified.copies, limit);
+            input.positions = std::move(simplified.positions);
+            for (std::uint32_t v : simplified.copies)
+                input.colors.push_back(input.colors[v]);
+        }
+    }
     compactMesh(input);
     finishProxy(input);
+    input.errorBound = e; // certified within the whole budget of the originals, both ways
     return input;
 }
 

@@ -29,7 +29,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 9;
+constexpr std::uint64_t kBakeFormatVersion = 10;
 
 // Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
 std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {
@@ -169,11 +169,20 @@ ProxyMesh makeProxy(ProxyMesh input, double errorBudget, const BakeParams& param
         const auto small =
             static_cast<std::size_t>(std::max(0, params.remesh.decimateBelowTriangles));
         if (decimated.triangleCount() <= small) return decimated;
-        ProxyMesh shell = remeshProxy(std::move(input), errorBudget, progress, params.remesh);
+        // The shell is measured against its input, which lies within its own bound of the
+        // originals: it gets what is left of the budget.
+        if (!(input.errorBound < errorBudget)) return decimated;
+        ProxyMesh shell =
+            remeshProxy(std::move(input), errorBudget - input.errorBound, progress, params.remesh);
+        shell.errorBound = static_cast<float>(errorBudget);
         return shell.triangleCount() <= decimated.triangleCount() ? shell : decimated;
     }
-    case ProxyMethod::Sloppy:
-        return sloppyProxy(std::move(input), errorBudget);
+    case ProxyMethod::Sloppy: {
+        // No bound is promised (SloppyProxy.h); it claims the whole budget.
+        ProxyMesh out = sloppyProxy(std::move(input), errorBudget);
+        out.errorBound = static_cast<float>(errorBudget);
+        return out;
+    }
     }
     return input;
 }

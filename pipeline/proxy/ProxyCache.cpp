@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <thread>
@@ -23,10 +24,10 @@ namespace hlod {
 namespace {
 
 constexpr char kMagic[8] = {'H', 'L', 'O', 'D', 'P', 'R', 'X', '\0'};
-constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kVersion = 3; // 3: the error bound after the origin
 constexpr std::uint32_t kHasNormals = 1;
 constexpr std::uint32_t kHasAtlas = 2; // uvs, then mask byte, mime type, encoded image
-constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 8 + 8 + 3 * 8;
+constexpr std::size_t kHeaderBytes = 8 + 4 + 4 + 8 + 8 + 8 + 3 * 8 + 4;
 
 template <class T> void put(std::vector<std::uint8_t>& out, const T& value) {
     const auto* p = reinterpret_cast<const std::uint8_t*>(&value);
@@ -106,6 +107,7 @@ std::vector<std::uint8_t> encodeProxy(std::uint64_t key, const ProxyMesh& mesh) 
     put(out, static_cast<std::uint64_t>(mesh.positions.size()));
     put(out, static_cast<std::uint64_t>(mesh.indices.size()));
     put(out, mesh.origin);
+    put(out, mesh.errorBound);
     putArray(out, mesh.positions);
     if (normals) putArray(out, mesh.normals);
     if (mesh.colors.size() == mesh.positions.size()) {
@@ -139,9 +141,10 @@ std::optional<ProxyMesh> decodeProxy(std::uint64_t key, const std::vector<std::u
     std::uint64_t fileKey = 0, vertices = 0, indices = 0;
     ProxyMesh m;
     if (!r.get(magic) || !r.get(version) || !r.get(flags) || !r.get(fileKey) || !r.get(vertices) ||
-        !r.get(indices) || !r.get(m.origin)) {
+        !r.get(indices) || !r.get(m.origin) || !r.get(m.errorBound)) {
         return std::nullopt;
     }
+    if (!(m.errorBound >= 0.0f) || !std::isfinite(m.errorBound)) return std::nullopt;
     if (version != kVersion || fileKey != key || indices % 3 != 0) return std::nullopt;
     if (!r.getArray(m.positions, vertices)) return std::nullopt;
     if ((flags & kHasNormals) && !r.getArray(m.normals, vertices)) return std::nullopt;

@@ -39,6 +39,12 @@ struct ProxyMesh {
     // and the vertex-colour fallback, but are not drawn with it).
     std::vector<glm::vec2> uvs;
     std::shared_ptr<const ProxyAtlas> atlas;
+    // How far the proxy may lie from the original meshes it stands for, both ways (metres):
+    // every point of it lies within this of them and every point of them within this of it
+    // (parts too small to see at the switch point aside, SmallParts.h). A parent baked from
+    // this proxy gets only the rest of its own budget for it, so errors never add up past a
+    // node's budget (DecimateProxy.h). 0 for an aggregated input of original meshes only.
+    float errorBound = 0.0f;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     std::size_t vertexCount() const { return positions.size(); }

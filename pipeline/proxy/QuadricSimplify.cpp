@@ -8,6 +8,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "pipeline/proxy/Quadric.h"
 #include "pipeline/proxy/SurfaceQuery.h"
 
 namespace hlod {
@@ -25,48 +26,6 @@ constexpr double kFoldCosine = -0.766; // 140 degrees
 // A remaining face may turn by at most this much (cosine) in one collapse.
 constexpr double kMinTurnCosine = 0.2; // 78 degrees
 constexpr int kMaxPasses = 200;
-
-// Symmetric 4x4 quadric (A, b, c) of summed weighted planes, and the summed weight.
-struct Quadric {
-    double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
-    double b0 = 0, b1 = 0, b2 = 0, c = 0, w = 0;
-
-    void addPlane(const glm::dvec3& n, double d, double weight) {
-        a00 += weight * n.x * n.x;
-        a01 += weight * n.x * n.y;
-        a02 += weight * n.x * n.z;
-        a11 += weight * n.y * n.y;
-        a12 += weight * n.y * n.z;
-        a22 += weight * n.z * n.z;
-        b0 += weight * n.x * d;
-        b1 += weight * n.y * d;
-        b2 += weight * n.z * d;
-        c += weight * d * d;
-        w += weight;
-    }
-    void add(const Quadric& q) {
-        a00 += q.a00, a01 += q.a01, a02 += q.a02, a11 += q.a11, a12 += q.a12, a22 += q.a22;
-        b0 += q.b0, b1 += q.b1, b2 += q.b2, c += q.c, w += q.w;
-    }
-    // Weighted mean squared distance of p to the planes.
-    double error(const glm::dvec3& p) const {
-        if (!(w > 0.0)) return 0.0;
-        const double rx = a00 * p.x + a01 * p.y + a02 * p.z + b0;
-        const double ry = a01 * p.x + a11 * p.y + a12 * p.z + b1;
-        const double rz = a02 * p.x + a12 * p.y + a22 * p.z + b2;
-        const double r = rx * p.x + ry * p.y + rz * p.z + b0 * p.x + b1 * p.y + b2 * p.z + c;
-        return std::abs(r) / w;
-    }
-    // The point of least error, when the planes pin one down well (not a line or a plane).
-    bool minimum(glm::dvec3& p) const {
-        const glm::dmat3 a(a00, a01, a02, a01, a11, a12, a02, a12, a22);
-        const double det = glm::determinant(a);
-        const double scale = a00 * a11 * a22;
-        if (!(std::abs(det) > 1e-6 * std::abs(scale)) || !(scale != 0.0)) return false;
-        p = glm::inverse(a) * glm::dvec3(-b0, -b1, -b2);
-        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-    }
-};
 
 enum class Kind : std::uint8_t { Interior, Feature, Fixed, Locked };
 
@@ -110,6 +69,55 @@ public:
                 if (nearOf_[indices[i]] == surface::kNoTriangle)
                     nearOf_[indices[i]] = static_cast<std::uint32_t>(i / 3);
             makeSamples();
+        }
+    }
+
+    // Bounded mode continued from `start`, a simplification of the input (positions, indices)
+    // over the input's vertex numbering, certified against the input.
+    Simplifier(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
+               const QuadricStart& start, double deviationLimit)
+        : input_(positions), pos_(start.positions.begin(), start.positions.end()),
+          tris_(start.indices.begin(), start.indices.end()), quadrics_(positions.size()),
+          rep_(start.representative.begin(), start.representative.end()), bounded_(true) {
+        std::vector<Quadric> ownQuadrics(positions.size());
+        addQuadrics(positions, indices, ownQuadrics);
+        for (std::uint32_t v = 0; v < ownQuadrics.size(); ++v)
+            quadrics_[rep_[v]].add(ownQuadrics[v]);
+        buildAdjacency();
+        buildEdges();
+        limit_ = static_cast<float>(deviationLimit);
+        limit2_ = limit_ * limit_;
+        original_.reset(positions, indices, limit_ * (1.0f - surface::kSlackFraction));
+        coverage_ =
+            std::make_unique<surface::Coverage>(original_, limit_ * surface::kSlackFraction);
+        // A vertex still at its input position lies on the input triangles it is a corner of;
+        // a moved one is located when first needed.
+        nearOf_.assign(positions.size(), surface::kNoTriangle);
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            const std::uint32_t v = indices[i];
+            if (nearOf_[v] == surface::kNoTriangle && pos_[v] == positions[v])
+                nearOf_[v] = static_cast<std::uint32_t>(i / 3);
+        }
+        // The input's samples, each owned by a face of the start within the limit of it (the
+        // start lies within the limit both ways; one the search misses stays unowned and the
+        // final check (BoundedSimplify.h) puts its input triangle back if it must).
+        owned_.assign(tris_.size() / 3, {});
+        surface::NearSurface current;
+        current.reset(pos_, tris_, limit_);
+        auto own = [&](const glm::vec3& at) {
+            if (!current.near(at)) return;
+            owned_[current.lastFound()].push_back(static_cast<std::uint32_t>(samples_.size()));
+            samples_.push_back(at);
+        };
+        std::vector<std::uint8_t> seen(positions.size(), 0);
+        for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+            const std::uint32_t* c = &indices[3 * t];
+            for (int k = 0; k < 3; ++k) {
+                if (seen[c[k]]) continue;
+                seen[c[k]] = 1;
+                own(positions[c[k]]);
+            }
+            forEachSample(positions[c[0]], positions[c[1]], positions[c[2]], own);
         }
     }
 
@@ -692,6 +700,15 @@ QuadricSimplifyResult simplifyWithQuadrics(std::span<const glm::vec3> positions,
                                            std::span<const std::uint8_t> locked, double maxError,
                                            double deviationLimit) {
     Simplifier s(positions, indices, locked, deviationLimit);
+    s.run(maxError);
+    return s.result();
+}
+
+QuadricSimplifyResult simplifyWithQuadricsFrom(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               const QuadricStart& start, double maxError,
+                                               double deviationLimit) {
+    Simplifier s(positions, indices, start, deviationLimit);
     s.run(maxError);
     return s.result();
 }

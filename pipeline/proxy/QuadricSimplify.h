@@ -71,11 +71,25 @@ struct QuadricSimplifyResult {
     std::vector<glm::vec3> positions;
 };
 
+// Where a continued simplification starts (see simplifyWithQuadricsFrom).
+struct QuadricStart {
+    std::span<const glm::vec3> positions;          // per input vertex, as moved
+    std::span<const std::uint32_t> indices;        // over the input's vertex numbering
+    std::span<const std::uint32_t> representative; // per input vertex: the vertex it became
+};
+
 // `locked` is empty or has one entry per position. maxError in the units of the positions.
 // deviationLimit > 0 turns on the bounded mode (see above).
 QuadricSimplifyResult simplifyWithQuadrics(std::span<const glm::vec3> positions,
                                            std::span<const std::uint32_t> indices,
                                            std::span<const std::uint8_t> locked, double maxError,
                                            double deviationLimit = 0.0);
+
+// Bounded mode, continued from `start` (a simplification of the input that lies within
+// deviationLimit of it both ways), certified against the input as above.
+QuadricSimplifyResult simplifyWithQuadricsFrom(std::span<const glm::vec3> positions,
+                                               std::span<const std::uint32_t> indices,
+                                               const QuadricStart& start, double maxError,
+                                               double deviationLimit);
 
 } // namespace hlod

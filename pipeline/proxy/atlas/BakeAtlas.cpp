@@ -15,10 +15,11 @@ namespace hlod {
 namespace {
 
 // The proxy with one vertex per (vertex, chart) pair, uvs from the layout.
-ProxyMesh splitAtSeams(const ProxyMesh& proxy, const Charting& charting,
-                       const AtlasLayout& layout, std::vector<glm::vec2>& cornerTexels) {
+ProxyMesh splitAtSeams(const ProxyMesh& proxy, const Charting& charting, const AtlasLayout& layout,
+                       std::vector<glm::vec2>& cornerTexels) {
     ProxyMesh out;
     out.origin = proxy.origin;
+    out.errorBound = proxy.errorBound;
     const bool normals = proxy.normals.size() == proxy.positions.size();
     const bool colors = proxy.colors.size() == proxy.positions.size();
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> remap;
@@ -33,7 +34,8 @@ ProxyMesh splitAtSeams(const ProxyMesh& proxy, const Charting& charting,
                                     charting.cornerCoords[3 * t + k] / layout.texelSize;
             cornerTexels[3 * t + k] = texel;
             const std::uint32_t v = proxy.indices[3 * t + k];
-            auto [it, added] = remap.try_emplace({v, chart}, static_cast<std::uint32_t>(out.positions.size()));
+            auto [it, added] =
+                remap.try_emplace({v, chart}, static_cast<std::uint32_t>(out.positions.size()));
             if (added) {
                 out.positions.push_back(proxy.positions[v]);
                 if (normals) out.normals.push_back(proxy.normals[v]);
@@ -58,7 +60,8 @@ std::shared_ptr<const ProxyAtlas> encodeAtlas(RgbaImage image, bool mask, int qu
     atlas->mimeType = encoded.mimeType;
     std::string why;
     auto decoded = decodeImage(atlas->encoded, why);
-    atlas->image = std::make_shared<const RgbaImage>(decoded ? std::move(*decoded) : std::move(image));
+    atlas->image =
+        std::make_shared<const RgbaImage>(decoded ? std::move(*decoded) : std::move(image));
     return atlas;
 }
 
@@ -71,8 +74,7 @@ ProxyMesh bakeAtlas(const ProxyMesh& proxy, const SourceSurfaces& sources, doubl
     const bool textured = std::any_of(sources.materials.begin(), sources.materials.end(),
                                       [](const SourceMaterial& m) { return m.texture != nullptr; });
     if (options.skipUntextured && !textured) return proxy;
-    const Charting charting =
-        buildCharts(proxy.positions, proxy.indices, options.maxNormalDegrees);
+    const Charting charting = buildCharts(proxy.positions, proxy.indices, options.maxNormalDegrees);
     const AtlasLayout layout = packCharts(charting.charts, static_cast<float>(texelSize),
                                           options.maxSize, options.padding);
     if (layout.width == 0) return proxy;
@@ -89,8 +91,8 @@ ProxyMesh bakeAtlas(const ProxyMesh& proxy, const SourceSurfaces& sources, doubl
     const ProxySurface surface{proxy.positions, proxy.normals, proxy.indices};
     sampleTexels(surface, coverage, sources, bvh, mips, static_cast<float>(1.5 * errorBudget),
                  layout.texelSize, image, state);
-    const bool mask =
-        std::any_of(state.begin(), state.end(), [](TexelState s) { return s == TexelState::CutOut; });
+    const bool mask = std::any_of(state.begin(), state.end(),
+                                  [](TexelState s) { return s == TexelState::CutOut; });
     dilateAtlas(image, state, 2 * options.padding + 2);
     out.atlas = encodeAtlas(std::move(image), mask, options.jpegQuality);
     return out;

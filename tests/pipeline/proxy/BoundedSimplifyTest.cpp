@@ -8,66 +8,9 @@
 #include "pipeline/proxy/ProxyTestUtil.h"
 
 using namespace hlod;
-
-namespace {
-
-struct Soup {
-    std::vector<glm::vec3> positions;
-    std::vector<std::uint32_t> indices;
-};
-
-// A 1.2 m x 1.2 m terrain of 12 x 12 cells, heights 0-5 cm from an integer hash (the same on
-// every platform): rough at the scale of a 2-3 cm budget, so the simplifier's samples miss a
-// few input triangles between them and the repair has work to do.
-Soup roughTerrain(std::uint32_t seed) {
-    constexpr int n = 12;
-    Soup s;
-    for (int i = 0; i <= n; ++i) {
-        for (int j = 0; j <= n; ++j) {
-            std::uint32_t h =
-                seed * 0x9e3779b9u ^ static_cast<std::uint32_t>(i * 73856093 ^ j * 19349663);
-            h ^= h >> 15, h *= 0x2c1b3c6du, h ^= h >> 12, h *= 0x297a2d39u, h ^= h >> 15;
-            s.positions.emplace_back(i * 0.1f, j * 0.1f,
-                                     0.05f * static_cast<float>(h % 1000) / 1000.0f);
-        }
-    }
-    for (std::uint32_t i = 0; i < n; ++i) {
-        for (std::uint32_t j = 0; j < n; ++j) {
-            const std::uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
-            s.indices.insert(s.indices.end(), {a, c, b, b, c, d});
-        }
-    }
-    return s;
-}
-
-// Largest distance from points spread over every triangle of `from` (a 12 x 12 barycentric
-// grid, corners and edges included) to the surface of `to`, brute force.
-double sampledDistance(std::span<const glm::vec3> fromPositions,
-                       std::span<const std::uint32_t> from, std::span<const glm::vec3> toPositions,
-                       std::span<const std::uint32_t> to) {
-    constexpr int k = 12;
-    double worst = 0.0;
-    for (std::size_t t = 0; t + 2 < from.size(); t += 3) {
-        const glm::dvec3 a(fromPositions[from[t]]), b(fromPositions[from[t + 1]]),
-            c(fromPositions[from[t + 2]]);
-        for (int i = 0; i <= k; ++i) {
-            for (int j = 0; i + j <= k; ++j) {
-                const glm::dvec3 p = a + (b - a) * (double(i) / k) + (c - a) * (double(j) / k);
-                double best = 1e300;
-                for (std::size_t u = 0; u + 2 < to.size(); u += 3) {
-                    const glm::dvec3 q = test::closestPointOnTriangle(
-                        p, glm::dvec3(toPositions[to[u]]), glm::dvec3(toPositions[to[u + 1]]),
-                        glm::dvec3(toPositions[to[u + 2]]));
-                    best = std::min(best, glm::length(q - p));
-                }
-                worst = std::max(worst, best);
-            }
-        }
-    }
-    return worst;
-}
-
-} // namespace
+using test::roughTerrain;
+using test::sampledDistance;
+using test::Soup;
 
 TEST(BoundedSimplify, RoughTerrainStaysWithinTheLimitBothWaysWithPatches) {
     constexpr double limit = 0.02;
