@@ -122,6 +122,8 @@ std::vector<CommandSpec> makeCommands() {
            "leaf group's meshes merged per look, one draw each); nodes: one draw per selected "
            "node or leaf mesh (the thesis' count).",
            "package"},
+          {"--frame-images", "", "",
+           "Also write every frame of every configuration as frames/NNNNN-KEY.png.", ""},
           {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
     return v;
 }

@@ -283,8 +283,32 @@ int addIndices(Doc& doc, std::span<const std::uint32_t> indices, std::size_t ver
                         "SCALAR");
 }
 
+const char* filterOf(Stream s) {
+    return s == kNormals ? "OCTAHEDRAL" : s == kUvs ? "EXPONENTIAL" : "NONE";
+}
+
+// With compression and no image in buffer 0, the stream stored plain (GlbWriter.h): the one
+// smallest once decoded; -1 otherwise.
+int plainStream(const Doc& doc) {
+    if (!doc.meshopt || (doc.gltf.contains("bufferViews") && !doc.gltf["bufferViews"].empty()))
+        return -1;
+    int best = -1;
+    std::size_t bestBytes = 0;
+    for (int s = 0; s < kStreams; ++s) {
+        const StreamData& d = doc.streams[s];
+        if (d.count == 0) continue;
+        const std::size_t bytes = d.count * strideOf(static_cast<Stream>(s), true);
+        if (best < 0 || bytes < bestBytes) {
+            best = s;
+            bestBytes = bytes;
+        }
+    }
+    return best;
+}
+
 // Every stream as one buffer view; the accessors pointed at theirs.
 void finishStreams(Doc& doc) {
+    const int plain = plainStream(doc);
     int viewOf[kStreams];
     for (int s = 0; s < kStreams; ++s) {
         const Stream stream = static_cast<Stream>(s);
@@ -293,18 +317,21 @@ void finishStreams(Doc& doc) {
         if (d.count == 0) continue;
         const std::size_t stride = strideOf(stream, doc.meshopt);
         const bool indices = stream == kIndices16 || stream == kIndices32;
-        if (doc.meshopt && indices) {
+        const bool compress = doc.meshopt && s != plain;
+        if (s == plain && !indices) {
+            const std::vector<std::uint8_t> bytes =
+                decodedAttributes(d.bytes.data(), d.count, stride, filterOf(stream));
+            viewOf[s] = doc.plainView(bytes.data(), bytes.size(), kArrayBuffer, stride);
+        } else if (compress && indices) {
             std::uint32_t top = 0;
             for (std::uint32_t i : d.indices)
                 top = std::max(top, i);
             viewOf[s] = doc.meshoptView(compressTriangles(d.indices, std::size_t(top) + 1), d.count,
                                         stride, kElementArrayBuffer, "TRIANGLES", "NONE");
-        } else if (doc.meshopt) {
-            const char* filter = stream == kNormals ? "OCTAHEDRAL"
-                                 : stream == kUvs   ? "EXPONENTIAL"
-                                                    : "NONE";
-            viewOf[s] = doc.meshoptView(compressAttributes(d.bytes.data(), d.count, stride),
-                                        d.count, stride, kArrayBuffer, "ATTRIBUTES", filter);
+        } else if (compress) {
+            viewOf[s] =
+                doc.meshoptView(compressAttributes(d.bytes.data(), d.count, stride), d.count,
+                                stride, kArrayBuffer, "ATTRIBUTES", filterOf(stream));
         } else if (stream == kIndices16) {
             const std::vector<std::uint16_t> narrow(d.indices.begin(), d.indices.end());
             viewOf[s] = doc.plainView(narrow.data(), d.count * 2, kElementArrayBuffer);

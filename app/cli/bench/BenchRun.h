@@ -28,6 +28,9 @@
 // drawables visible so every buffer is on the GPU. Frames are rendered frame-major (all
 // configurations of frame 0, then of frame 1, ...), so slow drift of the machine hits every
 // configuration alike.
+// Image error per frame against the Original frame: PSNR, differing pixels, mean FLIP at the
+// camera's own pixels per degree (Flip.h), and popping where the selection switches a level of
+// detail (Popping.h; FrameMetrics.h).
 #pragma once
 
 #include <filesystem>
@@ -60,6 +63,7 @@ struct BenchOptions {
     std::filesystem::path cacheDir; // proxy cache, empty = none
     bool proxyTextures = true;      // bake base-colour atlases (drawn in Textured shading)
     HlodDraw draw = HlodDraw::Package;
+    bool frameImages = false; // also write frames/NNNNN-KEY.png for every frame and config
 };
 
 inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",
