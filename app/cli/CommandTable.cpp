@@ -123,7 +123,11 @@ std::vector<CommandSpec> makeCommands() {
            "node or leaf mesh (the thesis' count).",
            "package"},
           {"--frame-images", "", "",
-           "Also write every frame of every configuration as frames/NNNNN-KEY.png.", ""},
+           "Also write every frame of every configuration as frames/NNNNN-KEY.png and its "
+           "camera as frames/NNNNN-camera.json.",
+           ""},
+          {"--cache", "", "DIR", "Proxy cache folder (the one hlod build uses by default).",
+           "~/.cache/hlod/proxies"},
           {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
     return v;
 }

@@ -101,6 +101,7 @@ int runBench(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument,
                     "--shading must be geometry, colour or textured, not '" + shading + "'");
     if (!args.has("--no-cache")) o.cacheDir = benchCacheDir();
+    if (auto cache = args.value("--cache"); cache && !args.has("--no-cache")) o.cacheDir = *cache;
     const std::string textures = args.value("--proxy-textures", "on");
     if (textures != "on" && textures != "off")
         throw Error(ErrorCode::InvalidArgument,

@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // Renders an exported HLOD package (3D Tiles 1.1) in headless Chromium with a real 3D Tiles
-// runtime (three.js + 3d-tiles-renderer) and checks that it loads and shows something.
+// runtime (three.js + 3d-tiles-renderer, or CesiumJS with --runtime cesium) and checks that it
+// loads and shows something.
 //
 // A static HTTP server on 127.0.0.1 (random free port) serves DIR under /tiles/, viewer.html and
 // viewer.js at / and tests/web/node_modules under /node_modules/ (the page's import map points
@@ -10,13 +11,25 @@
 // the background colour is measured by decoding that PNG here (node:zlib, no extra deps).
 //
 // Prints one JSON object on stdout:
-//   {tilesLoaded, tilesFailed, consoleErrors, pageErrors, nonBackgroundPixelShare, ...}
-// Exit 0 when tilesLoaded > 0, tilesFailed == 0, no console/page errors and
-// nonBackgroundPixelShare > 0.01; otherwise exit 1 with a one-line reason on stderr
+//   {tilesLoaded, tilesFailed, consoleErrors, consoleMessages, pageErrors,
+//    nonBackgroundPixelShare, screenshots, ...}
+// Exit 0 when tilesLoaded > 0, tilesFailed == 0, no page errors, no console errors or warnings
+// and nonBackgroundPixelShare > 0.01; otherwise exit 1 with a one-line reason on stderr
 // (2 on bad usage). A loading timeout fails too (timedOut).
 //
-// Usage: node render-tileset.mjs DIR OUT.png [--width W] [--height H] [--timeout SECONDS]
-//                                          [--error-target PX]
+// --camera FILE.json views the package from a given camera instead of framing it: {eye,
+// target, up, fovDeg[, near, far]} in the package's frame (the frame of its content and of
+// `hlod bench`), or a camera path of `hlod bench --path` (its first key). --shading takes
+// pbr (the runtime's own materials and lights, the default) or geometry / textured, the shading
+// of `hlod bench` (bench-shading-three.js), or several separated by commas: the tiles load once
+// and one picture per shading is saved as OUT-<shading>.png. --no-antialias turns MSAA off (the
+// bench has none), --background RRGGBB sets the clear colour, --place LON,LAT,H (cesium) puts
+// the package on the globe as the README says.
+//
+// Usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium] [--width W] [--height H]
+//          [--timeout SECONDS] [--error-target PX] [--camera FILE.json]
+//          [--shading pbr|geometry|textured[,...]] [--no-antialias] [--background RRGGBB]
+//          [--place LON,LAT,H]
 
 import fs from 'node:fs';
 import http from 'node:http';
@@ -39,12 +52,19 @@ const CHROMIUM_ARGS = [
   '--disable-quic',
   '--disable-sync',
 ];
-const BACKGROUND = [0x30, 0x34, 0x3c]; // must match the page's default clear colour
+const DEFAULT_BACKGROUND = '30343c'; // the pages' default clear colour
 const BACKGROUND_TOLERANCE = 12; // per channel, absorbs dithering/colour-space rounding
 const MIN_PIXEL_SHARE = 0.01;
+// Console warnings a runtime prints about itself, not about the package: reported as notices.
+// 3d-tiles-renderer 0.5 says this of every 3D Tiles 1.1 tileset (asset.version "1.1", which
+// glTF content without an extension needs).
+const KNOWN_NOTICES = [
+  /^warning: TilesRenderer: tiles versions at 1\.1 or higher have limited support\./,
+];
 
 const MIME = {
   '.html': 'text/html; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
   '.js': 'text/javascript; charset=utf-8',
   '.mjs': 'text/javascript; charset=utf-8',
   '.json': 'application/json; charset=utf-8',
@@ -65,7 +85,10 @@ const MIME = {
 };
 
 function parseArgs(argv) {
-  const opts = { width: 800, height: 600, timeout: 60, errorTarget: 16, positional: [] };
+  const opts = {
+    width: 800, height: 600, timeout: 60, errorTarget: 16, runtime: 'three', camera: null,
+    shading: ['pbr'], antialias: true, background: DEFAULT_BACKGROUND, place: null, positional: [],
+  };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
     const value = () => {
@@ -77,12 +100,41 @@ function parseArgs(argv) {
     else if (a === '--height') opts.height = Math.round(value());
     else if (a === '--timeout') opts.timeout = value();
     else if (a === '--error-target') opts.errorTarget = value();
-    else if (a.startsWith('--')) throw new Error(`unknown option ${a}`);
+    else if (a === '--runtime') {
+      opts.runtime = argv[++i];
+      if (opts.runtime !== 'three' && opts.runtime !== 'cesium') throw new Error('--runtime must be three or cesium');
+    } else if (a === '--camera') opts.camera = readCamera(argv[++i]);
+    else if (a === '--shading') {
+      opts.shading = String(argv[++i]).split(',');
+      if (!opts.shading.every((s) => ['pbr', 'geometry', 'textured'].includes(s))) {
+        throw new Error('--shading takes pbr, geometry, textured');
+      }
+    } else if (a === '--no-antialias') opts.antialias = false;
+    else if (a === '--background') {
+      opts.background = String(argv[++i]).toLowerCase();
+      if (!/^[0-9a-f]{6}$/.test(opts.background)) throw new Error('--background takes RRGGBB');
+    } else if (a === '--place') {
+      opts.place = String(argv[++i]);
+      if (!/^-?[\d.]+,-?[\d.]+(,-?[\d.]+)?$/.test(opts.place)) throw new Error('--place takes LON,LAT[,H]');
+    } else if (a.startsWith('--')) throw new Error(`unknown option ${a}`);
     else opts.positional.push(a);
   }
   if (opts.positional.length !== 2) throw new Error('expected DIR and OUT.png');
   [opts.dir, opts.out] = opts.positional;
   return opts;
+}
+
+/** A camera file: {eye, target, up, fovDeg, near?, far?}, or a bench camera path (first key). */
+function readCamera(file) {
+  const j = JSON.parse(fs.readFileSync(file, 'utf8'));
+  if (Array.isArray(j.keys)) {
+    return { eye: j.keys[0].eye, target: j.keys[0].target, up: j.up || [0, 1, 0], fovDeg: j.fov_deg || 60 };
+  }
+  for (const k of ['eye', 'target', 'up']) {
+    if (!Array.isArray(j[k]) || j[k].length !== 3) throw new Error(`${file}: ${k} must be 3 numbers`);
+  }
+  if (!(j.fovDeg > 0 && j.fovDeg < 180)) throw new Error(`${file}: fovDeg must be in (0, 180)`);
+  return j;
 }
 
 /** Serves fixed files and two directory trees; never anything outside them. */
@@ -95,6 +147,9 @@ function startServer(tilesDir) {
     '/': path.join(HERE, 'viewer.html'),
     '/viewer.html': path.join(HERE, 'viewer.html'),
     '/viewer.js': path.join(HERE, 'viewer.js'),
+    '/bench-shading-three.js': path.join(HERE, 'bench-shading-three.js'),
+    '/cesium.html': path.join(HERE, 'cesium.html'),
+    '/cesium-viewer.js': path.join(HERE, 'cesium-viewer.js'),
   };
   const httpErrors = [];
   const server = http.createServer((req, res) => {
@@ -185,7 +240,8 @@ function decodePng(buf) {
   return { width, height, channels, pixels };
 }
 
-function nonBackgroundShare(png) {
+function nonBackgroundShare(png, background) {
+  const BACKGROUND = [0, 2, 4].map((k) => parseInt(background.slice(k, k + 2), 16));
   const { width, height, channels, pixels } = png;
   let count = 0;
   for (let i = 0; i < width * height; ++i) {
@@ -204,7 +260,8 @@ const withTimeout = (promise, ms, what) =>
 
 async function run(opts, state) {
   if (!fs.existsSync(path.join(opts.dir, 'tileset.json'))) throw new Error(`no tileset.json in ${opts.dir}`);
-  if (!fs.existsSync(path.join(HERE, 'node_modules', '3d-tiles-renderer'))) {
+  if (!fs.existsSync(path.join(HERE, 'node_modules', '3d-tiles-renderer')) ||
+      !fs.existsSync(path.join(HERE, 'node_modules', 'cesium'))) {
     throw new Error('tests/web/node_modules missing: run npm ci in tests/web');
   }
   const { server, httpErrors, port } = await startServer(opts.dir);
@@ -221,10 +278,17 @@ async function run(opts, state) {
     deviceScaleFactor: 1,
   });
   const page = await context.newPage();
-  const consoleErrors = [];
+  const consoleErrors = []; // errors and warnings
+  const consoleMessages = []; // anything else the page logs
   const pageErrors = [];
   page.on('console', (msg) => {
-    if (msg.type() === 'error') consoleErrors.push(msg.text());
+    const type = msg.type();
+    const text = `${type}: ${msg.text()}`;
+    if ((type === 'error' || type === 'warning') && !KNOWN_NOTICES.some((r) => r.test(text))) {
+      consoleErrors.push(text);
+    } else {
+      consoleMessages.push(text);
+    }
   });
   page.on('pageerror', (err) => pageErrors.push(String(err && err.stack ? err.message : err)));
 
@@ -233,9 +297,14 @@ async function run(opts, state) {
     h: opts.height,
     errorTarget: opts.errorTarget,
     timeoutMs: Math.round(opts.timeout * 1000),
-    bg: BACKGROUND.map((v) => v.toString(16).padStart(2, '0')).join(''),
+    bg: opts.background,
+    shading: opts.shading[0],
+    antialias: opts.antialias ? '1' : '0',
   });
-  await page.goto(`http://127.0.0.1:${port}/viewer.html?${query}`, { timeout: 15000 });
+  if (opts.camera) query.set('camera', JSON.stringify(opts.camera));
+  if (opts.place) query.set('place', opts.place);
+  const pageName = opts.runtime === 'cesium' ? 'cesium.html' : 'viewer.html';
+  await page.goto(`http://127.0.0.1:${port}/${pageName}?${query}`, { timeout: 15000 });
   let result;
   try {
     await page.waitForFunction(() => window.__hlodResult && window.__hlodResult.done, null, {
@@ -253,23 +322,36 @@ async function run(opts, state) {
   }
 
   fs.mkdirSync(path.dirname(path.resolve(opts.out)), { recursive: true });
-  const png = await page.locator('canvas').screenshot({ path: opts.out, timeout: 15000 });
-  const share = nonBackgroundShare(decodePng(png));
+  const screenshots = [];
+  let share = 0;
+  for (const shading of opts.shading) {
+    const out = opts.shading.length === 1 ? opts.out : opts.out.replace(/(\.png)?$/i, `-${shading}.png`);
+    if (!result.timedOut && shading !== opts.shading[0]) {
+      await page.evaluate((s) => window.__hlodShade(s), shading);
+    }
+    const png = await page.locator('canvas').first().screenshot({ path: out, timeout: 15000 });
+    share = Math.max(share, nonBackgroundShare(decodePng(png), opts.background));
+    screenshots.push(out);
+  }
 
   return {
     tilesLoaded: result.tilesLoaded,
     tilesFailed: result.tilesFailed,
     consoleErrors,
+    consoleMessages,
     pageErrors,
     nonBackgroundPixelShare: Number(share.toFixed(4)),
     failures: result.failures,
     httpErrors,
     timedOut: result.timedOut,
     framed: result.framed,
+    viewFromPackage: Boolean(result.viewFromPackage),
     sphere: result.sphere,
     stats: result.stats,
     elapsedMs: result.elapsedMs,
-    screenshot: opts.out,
+    screenshot: screenshots[0],
+    screenshots,
+    runtime: opts.runtime,
   };
 }
 
@@ -292,7 +374,9 @@ async function main() {
     opts = parseArgs(process.argv.slice(2));
   } catch (err) {
     console.error(`render-tileset: ${err.message}`);
-    console.error('usage: node render-tileset.mjs DIR OUT.png [--width W] [--height H] [--timeout S] [--error-target PX]');
+    console.error('usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium] [--width W] [--height H] ' +
+      '[--timeout S] [--error-target PX] [--camera FILE.json] [--shading pbr|geometry|textured[,...]] ' +
+      '[--no-antialias] [--background RRGGBB] [--place LON,LAT,H]');
     return 2;
   }
 

@@ -148,11 +148,20 @@ void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& rende
     }
 }
 
-// The package's tiles a 3D Tiles runtime draws for `camera` (REPLACE refinement): a tile whose
-// bounding box misses the frustum is skipped with everything below it; a node's tile is
-// refined where Algorithm 5 refines the node (its geometric error is set for that, Package.h);
-// a leaf-group tile is drawn whenever it is reached.
-void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& frustum,
+// Distance from `p` to the box (0 inside).
+double distanceToBox(const Aabb& box, const glm::dvec3& p) {
+    const glm::dvec3 d = glm::max(glm::max(box.min - p, p - box.max), glm::dvec3(0.0));
+    return glm::length(d);
+}
+
+// The package's tiles a 3D Tiles runtime draws for `camera` (REPLACE refinement), as
+// 3d-tiles-renderer and CesiumJS select them: a tile whose bounding box misses the frustum is
+// skipped with everything below it; a tile with children is refined when its screen-space
+// error, geometricError x (pixels per unit at distance 1) / (distance from the eye to its box),
+// exceeds `maxError` pixels (always inside its box); a tile without children is drawn whenever
+// it is reached. (Algorithm 5 measures the distance to a node's centre instead, so a runtime
+// refines somewhat farther away than the node count does.)
+void selectPackage(const Config& c, const Camera& cam, double maxError, const Frustum& frustum,
                    std::vector<int>& draw, std::vector<int>& tiles, FrameRecord& r) {
     const PackageLayout& layout = *c.layout;
     if (layout.tiles.empty()) return;
@@ -163,9 +172,12 @@ void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& fr
         ++r.nodesVisited;
         if (!frustum.intersectsSphere(tile.worldBox.center(), tile.worldBox.diagonal() * 0.5))
             continue;
-        if (tile.node != kNoId && !tile.children.empty() && cls.tooBig(tile.node)) {
-            stack.insert(stack.end(), tile.children.begin(), tile.children.end());
-            continue;
+        if (!tile.children.empty()) {
+            const double d = distanceToBox(tile.worldBox, cam.eye);
+            if (d <= 0.0 || tile.geometricError * cam.pixelsPerUnitAtDistanceOne() > maxError * d) {
+                stack.insert(stack.end(), tile.children.begin(), tile.children.end());
+                continue;
+            }
         }
         if (tile.content < 0) continue;
         const Config::ContentDraw& d = c.contentDraws[static_cast<std::size_t>(tile.content)];
@@ -173,6 +185,23 @@ void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& fr
         draw.insert(draw.end(), d.drawables.begin(), d.drawables.end());
         r.triangles += d.triangles;
     }
+}
+
+// frames/NNNNN-camera.json: the frame's camera, for renderers to draw the same view
+// (tests/web/render-tileset.mjs --camera).
+void writeFrameCamera(const std::filesystem::path& dir, int frame, const Camera& cam) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "%05d-camera.json", frame);
+    const nlohmann::json j = {
+        {"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
+        {"target", {cam.target.x, cam.target.y, cam.target.z}},
+        {"up", {cam.up.x, cam.up.y, cam.up.z}},
+        {"fovDeg", glm::degrees(cam.fovY)},
+        {"near", cam.nearPlane},
+        {"far", cam.farPlane},
+        {"width", static_cast<int>(std::lround(cam.aspect * cam.viewportHeight))},
+        {"height", cam.viewportHeight}};
+    writeTextFileAtomic(dir / name, j.dump(1) + "\n");
 }
 
 } // namespace
@@ -208,6 +237,9 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     // A DLOD level is shown where its measured deviation covers at most the pixel error of the
     // reference viewport (as proxies are at their switch): dev * ppu / d <= height / 1080.
     const double dlodPixelError = o.height / referenceHeight;
+    // A package tile is refined past this screen-space error: the pixel error at the reference
+    // viewport, scaled to the render height like S (so tiles switch at the baked distances).
+    const double tileErrorPx = BakeParams{}.screen.pixelError * o.height / referenceHeight;
 
     // Configurations; Original first, always (it is the image reference).
     std::vector<Config> configs;
@@ -368,6 +400,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     if (o.frameImages) fs::create_directories(o.out / "frames", ec);
     for (int f = 0; f < o.frames; ++f) {
         const Camera& cam = cameras[static_cast<std::size_t>(f)];
+        if (o.frameImages) writeFrameCamera(o.out / "frames", f, cam);
         const Frustum frustum = Frustum::fromCamera(cam);
         const double ppu = cam.pixelsPerUnitAtDistanceOne();
         for (std::size_t ci = 0; ci < configs.size(); ++ci) {
@@ -381,8 +414,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
             std::function<int(int)> parent = [](int) { return -1; };
             const auto t0 = Clock::now();
             if (c.kind == Kind::Hlod && c.layout) {
-                selectPackage(c, NodeClassifier(*c.selection, cam, {selectionS}), frustum, draw,
-                              units, r);
+                selectPackage(c, cam, tileErrorPx, frustum, draw, units, r);
                 r.selectionUs = msSince(t0) * 1000.0;
                 parent = [&c](int t) {
                     return c.layout->tiles[static_cast<std::size_t>(t)].parent;

@@ -10,21 +10,22 @@ using namespace hlod;
 
 namespace {
 
-// A 32x32 grey frame with a dark 8x8 box whose left edge is at `x` (the camera pans).
-RgbImage frame(int x, Rgb background = Rgb(180)) {
-    RgbImage img(32, 32, background);
-    img.fillRect(x, 12, x + 8, 20, Rgb(40));
+// A 32x32 grey frame with a dark 8x8 box whose left edge is at `x` (the camera pans); the
+// whole frame `offset` levels darker.
+RgbImage frame(int x, int offset = 0) {
+    RgbImage img(32, 32, Rgb(static_cast<std::uint8_t>(180 - offset)));
+    img.fillRect(x, 12, x + 8, 20, Rgb(static_cast<std::uint8_t>(40 - offset)));
     return img;
 }
 
 } // namespace
 
 TEST(Popping, ChangeLikeTheOriginalsIsNoPop) {
-    // The HLOD frames are the Original's with a slightly different background (its error), and
-    // the box moves the same way in both: carried forward, the previous HLOD frame becomes
+    // The HLOD frames are the Original's 4 levels darker (an error that moves with the view),
+    // and the box moves the same way in both: carried forward, the previous HLOD frame becomes
     // exactly the current one.
     const RgbImage o0 = frame(4), o1 = frame(6);
-    const RgbImage h0 = frame(4, Rgb(176)), h1 = frame(6, Rgb(176));
+    const RgbImage h0 = frame(4, 4), h1 = frame(6, 4);
     EXPECT_EQ(carriedForward(h0, o0, o1).pixels, h1.pixels);
     EXPECT_EQ(popFlip(h0, h1, o0, o1, 5.44), 0.0);
 }
