@@ -14,7 +14,8 @@
 // Here the texture is sampled as stored (NoColorSpace) and the result written as is (a
 // ShaderMaterial gets no output colour-space conversion), exactly that product.
 // Culling: the glTF material's side (three.js: back faces culled unless doubleSided), as an
-// engine draws; the bench, until it culls too, draws back faces (see tests/web/README.md).
+// engine draws; `cullBackFaces` false draws both sides of everything (a bench that does not
+// cull, see tests/web/README.md).
 
 import * as THREE from 'three';
 
@@ -80,7 +81,7 @@ const fragmentShader = /* glsl */ `
 `;
 
 /** The bench-like material replacing a glTF `source` material (MeshStandardMaterial). */
-export function benchMaterial(source, geometry, shading) {
+export function benchMaterial(source, geometry, shading, cullBackFaces = true) {
   const geometryShading = shading === 'geometry';
   const map = !geometryShading && source.map ? source.map : null;
   const emissiveMap = !geometryShading && source.emissiveMap ? source.emissiveMap : null;
@@ -109,7 +110,7 @@ export function benchMaterial(source, geometry, shading) {
     },
     vertexColors: hasColor,
     transparent: !geometryShading && source.transparent,
-    side: source.side,
+    side: cullBackFaces ? source.side : THREE.DoubleSide,
   });
   return material;
 }
@@ -118,15 +119,15 @@ export function benchMaterial(source, geometry, shading) {
  * Gives every mesh under `root` the bench material of `shading`; the glTF materials are kept
  * on the meshes (userData) so the shading can be switched again.
  */
-export function applyBenchShading(root, shading) {
+export function applyBenchShading(root, shading, cullBackFaces = true) {
   root.traverse((o) => {
     if (!o.isMesh) return;
     if (!o.userData.gltfMaterial) o.userData.gltfMaterial = o.material;
     const source = o.userData.gltfMaterial;
     if (Array.isArray(source)) {
-      o.material = source.map((m) => benchMaterial(m, o.geometry, shading));
+      o.material = source.map((m) => benchMaterial(m, o.geometry, shading, cullBackFaces));
     } else {
-      o.material = benchMaterial(source, o.geometry, shading);
+      o.material = benchMaterial(source, o.geometry, shading, cullBackFaces);
     }
   });
 }

@@ -8,8 +8,10 @@
 // package's frame: content frame, Y up), shading (pbr: CesiumJS's own lighting, the default;
 // geometry or textured: the shading of `hlod bench` as a CustomShader), place (LON,LAT,H in
 // degrees and metres: the package's local frame put on the globe there with
-// Transforms.eastNorthUpToFixedFrame, as the README tells users; the camera goes with it).
-// window.__hlodShade(shading) switches the shading and resolves after the frames it needs.
+// Transforms.eastNorthUpToFixedFrame, as the README tells users; the camera goes with it), cull
+// (none: Cesium3DTileset.backFaceCulling off; default: as the glTF material says).
+// window.__hlodShade(shading) switches the shading and resolves after the frames it needs;
+// window.__hlodView(camera) moves to another camera and resolves when its tiles are loaded.
 //
 // Frames: glTF content is Y up and CesiumJS turns it Z up (3D Tiles 5.3.4): package (x, y, z)
 // is (x, -z, y) in the tileset frame, then the model matrix (identity: the Earth's centre, or
@@ -135,6 +137,8 @@ function placeCamera(view) {
 
 const start = performance.now();
 let lastBusy = start;
+let viewStart = start; // when the current view was set (its timeout counts from there)
+let onSettled = null; // resolves window.__hlodView's promise
 let tileset = null;
 
 function finish() {
@@ -146,6 +150,11 @@ function finish() {
     : null;
   result.elapsedMs = Math.round(performance.now() - start);
   result.done = true;
+  if (onSettled) {
+    const resolve = onSettled;
+    onSettled = null;
+    resolve(true);
+  }
 }
 
 async function main() {
@@ -158,6 +167,7 @@ async function main() {
       cullRequestsWhileMoving: false,
       progressiveResolutionHeightFraction: 0,
       modelMatrix,
+      backFaceCulling: params.get('cull') !== 'none',
       customShader: benchShader(shading),
     });
   } catch (err) {
@@ -192,12 +202,22 @@ async function main() {
     const now = performance.now();
     if (!tileset.tilesLoaded) lastBusy = now;
     if (now - lastBusy >= settleMs) finish();
-    else if (now - start >= timeoutMs) {
+    else if (now - viewStart >= timeoutMs) {
       result.timedOut = true;
       finish();
     }
   });
 }
+
+// Another camera (package frame, as the `camera` parameter): resolves once its tiles are loaded.
+window.__hlodView = (view) =>
+  new Promise((resolve) => {
+    placeCamera({ ...view, eye: zUp(view.eye), target: zUp(view.target), up: zUp(view.up) });
+    result.done = false;
+    viewStart = performance.now();
+    lastBusy = viewStart;
+    onSettled = resolve;
+  });
 
 window.__hlodShade = (next) => {
   shading = next;

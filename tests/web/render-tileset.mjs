@@ -19,14 +19,21 @@
 //
 // --camera FILE.json views the package from a given camera instead of framing it: {eye,
 // target, up, fovDeg[, near, far]} in the package's frame (the frame of its content and of
-// `hlod bench`), or a camera path of `hlod bench --path` (its first key). --shading takes
+// `hlod bench`), or a camera path of `hlod bench --path` (its first key); several files
+// separated by commas are visited in turn in the same page (tiles loading for each), the
+// pictures named OUT-vN.png. --shading takes
 // pbr (the runtime's own materials and lights, the default) or geometry / textured, the shading
 // of `hlod bench` (bench-shading-three.js), or several separated by commas: the tiles load once
 // and one picture per shading is saved as OUT-<shading>.png. --no-antialias turns MSAA off (the
-// bench has none), --background RRGGBB sets the clear colour, --place LON,LAT,H (cesium) puts
+// bench has none), --cull none draws both sides of every surface (a bench that does not cull;
+// default gltf: back faces culled unless the material is double-sided, as engines do),
+// --background RRGGBB sets the clear colour, --place LON,LAT,H (cesium) puts
 // the package on the globe as the README says.
 //
-// Usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium] [--width W] [--height H]
+// --runtime three,cesium renders with both in one browser (a fresh context each) and prints
+// {runs: [report, report]}, the pictures then named OUT-<runtime>[-<shading>].png.
+//
+// Usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium[,...]] [--width W] [--height H]
 //          [--timeout SECONDS] [--error-target PX] [--camera FILE.json]
 //          [--shading pbr|geometry|textured[,...]] [--no-antialias] [--background RRGGBB]
 //          [--place LON,LAT,H]
@@ -86,8 +93,8 @@ const MIME = {
 
 function parseArgs(argv) {
   const opts = {
-    width: 800, height: 600, timeout: 60, errorTarget: 16, runtime: 'three', camera: null,
-    shading: ['pbr'], antialias: true, background: DEFAULT_BACKGROUND, place: null, positional: [],
+    width: 800, height: 600, timeout: 60, errorTarget: 16, runtimes: ['three'], cameras: [],
+    shading: ['pbr'], antialias: true, cull: 'gltf', background: DEFAULT_BACKGROUND, place: null, positional: [],
   };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
@@ -101,15 +108,19 @@ function parseArgs(argv) {
     else if (a === '--timeout') opts.timeout = value();
     else if (a === '--error-target') opts.errorTarget = value();
     else if (a === '--runtime') {
-      opts.runtime = argv[++i];
-      if (opts.runtime !== 'three' && opts.runtime !== 'cesium') throw new Error('--runtime must be three or cesium');
-    } else if (a === '--camera') opts.camera = readCamera(argv[++i]);
+      opts.runtimes = String(argv[++i]).split(',');
+      if (!opts.runtimes.every((r) => r === 'three' || r === 'cesium')) throw new Error('--runtime takes three, cesium');
+    } else if (a === '--camera') opts.cameras = String(argv[++i]).split(',').map(readCamera);
     else if (a === '--shading') {
       opts.shading = String(argv[++i]).split(',');
       if (!opts.shading.every((s) => ['pbr', 'geometry', 'textured'].includes(s))) {
         throw new Error('--shading takes pbr, geometry, textured');
       }
     } else if (a === '--no-antialias') opts.antialias = false;
+    else if (a === '--cull') {
+      opts.cull = argv[++i];
+      if (opts.cull !== 'gltf' && opts.cull !== 'none') throw new Error('--cull takes gltf or none');
+    }
     else if (a === '--background') {
       opts.background = String(argv[++i]).toLowerCase();
       if (!/^[0-9a-f]{6}$/.test(opts.background)) throw new Error('--background takes RRGGBB');
@@ -258,6 +269,15 @@ const withTimeout = (promise, ms, what) =>
     new Promise((_, reject) => setTimeout(() => reject(new Error(`${what} timed out after ${ms} ms`)), ms).unref()),
   ]);
 
+// The picture file of `runtime`, camera `view` and `shading`: OUT, or with -RUNTIME, -vVIEW and
+// -SHADING before .png as far as there are several.
+function outName(opts, runtime, view, shading) {
+  let suffix = opts.runtimes.length > 1 ? `-${runtime}` : '';
+  if (opts.cameras.length > 1) suffix += `-v${view}`;
+  if (opts.shading.length > 1) suffix += `-${shading}`;
+  return suffix ? opts.out.replace(/(\.png)?$/i, `${suffix}.png`) : opts.out;
+}
+
 async function run(opts, state) {
   if (!fs.existsSync(path.join(opts.dir, 'tileset.json'))) throw new Error(`no tileset.json in ${opts.dir}`);
   if (!fs.existsSync(path.join(HERE, 'node_modules', '3d-tiles-renderer')) ||
@@ -273,7 +293,19 @@ async function run(opts, state) {
     args: CHROMIUM_ARGS,
     timeout: 30000,
   }); // playwright gives the browser a fresh temporary profile and deletes it on close
-  const context = await state.browser.newContext({
+  const reports = [];
+  for (const runtime of opts.runtimes) {
+    const before = httpErrors.length;
+    const report = await renderWith(opts, runtime, state.browser, port);
+    report.httpErrors = httpErrors.slice(before);
+    reports.push(report);
+  }
+  return reports.length === 1 ? reports[0] : { runs: reports };
+}
+
+// One runtime in its own browser context (a page of its own, nothing shared).
+async function renderWith(opts, runtime, browser, port) {
+  const context = await browser.newContext({
     viewport: { width: opts.width, height: opts.height },
     deviceScaleFactor: 1,
   });
@@ -300,10 +332,11 @@ async function run(opts, state) {
     bg: opts.background,
     shading: opts.shading[0],
     antialias: opts.antialias ? '1' : '0',
+    cull: opts.cull === 'none' ? 'none' : 'gltf',
   });
-  if (opts.camera) query.set('camera', JSON.stringify(opts.camera));
+  if (opts.cameras.length) query.set('camera', JSON.stringify(opts.cameras[0]));
   if (opts.place) query.set('place', opts.place);
-  const pageName = opts.runtime === 'cesium' ? 'cesium.html' : 'viewer.html';
+  const pageName = runtime === 'cesium' ? 'cesium.html' : 'viewer.html';
   await page.goto(`http://127.0.0.1:${port}/${pageName}?${query}`, { timeout: 15000 });
   let result;
   try {
@@ -323,18 +356,28 @@ async function run(opts, state) {
 
   fs.mkdirSync(path.dirname(path.resolve(opts.out)), { recursive: true });
   const screenshots = [];
+  const views = [];
   let share = 0;
-  for (const shading of opts.shading) {
-    const out = opts.shading.length === 1 ? opts.out : opts.out.replace(/(\.png)?$/i, `-${shading}.png`);
-    if (!result.timedOut && shading !== opts.shading[0]) {
-      await page.evaluate((s) => window.__hlodShade(s), shading);
+  let current = opts.shading[0];
+  for (let v = 0; v < Math.max(opts.cameras.length, 1); ++v) {
+    if (v > 0) {
+      await page.evaluate((cam) => window.__hlodView(cam), opts.cameras[v]);
+      result = await page.evaluate(() => window.__hlodResult);
     }
-    const png = await page.locator('canvas').first().screenshot({ path: out, timeout: 15000 });
-    share = Math.max(share, nonBackgroundShare(decodePng(png), opts.background));
-    screenshots.push(out);
+    views.push({ timedOut: result.timedOut, elapsedMs: result.elapsedMs, stats: result.stats });
+    for (const shading of opts.shading) {
+      const out = outName(opts, runtime, v, shading);
+      if (!result.timedOut && shading !== current) {
+        await page.evaluate((s) => window.__hlodShade(s), shading);
+        current = shading;
+      }
+      const png = await page.locator('canvas').first().screenshot({ path: out, timeout: 15000 });
+      share = Math.max(share, nonBackgroundShare(decodePng(png), opts.background));
+      screenshots.push(out);
+    }
   }
 
-  return {
+  const report = {
     tilesLoaded: result.tilesLoaded,
     tilesFailed: result.tilesFailed,
     consoleErrors,
@@ -342,7 +385,7 @@ async function run(opts, state) {
     pageErrors,
     nonBackgroundPixelShare: Number(share.toFixed(4)),
     failures: result.failures,
-    httpErrors,
+    httpErrors: [],
     timedOut: result.timedOut,
     framed: result.framed,
     viewFromPackage: Boolean(result.viewFromPackage),
@@ -351,8 +394,11 @@ async function run(opts, state) {
     elapsedMs: result.elapsedMs,
     screenshot: screenshots[0],
     screenshots,
-    runtime: opts.runtime,
+    views,
+    runtime,
   };
+  await context.close();
+  return report;
 }
 
 function verdict(report) {
@@ -392,17 +438,23 @@ async function main() {
     }
   };
   // Last resort if anything hangs: playwright kills the browsers it launched on process exit.
+  const limit = (opts.timeout + 60) * opts.runtimes.length * Math.max(opts.cameras.length, 1);
   const watchdog = setTimeout(() => {
-    console.error(`render-tileset: watchdog: gave up after ${opts.timeout + 60} s`);
+    console.error(`render-tileset: watchdog: gave up after ${limit} s`);
     process.exit(1);
-  }, (opts.timeout + 60) * 1000);
+  }, limit * 1000);
 
   let code = 1;
   try {
     const report = await run(opts, state);
     console.log(JSON.stringify(report));
-    if (report.timedOut) console.error(`render-tileset: warning: loading did not settle within ${opts.timeout} s`);
-    const reason = verdict(report);
+    const reports = report.runs || [report];
+    let reason = null;
+    for (const r of reports) {
+      if (r.timedOut) console.error(`render-tileset: warning: ${r.runtime}: loading did not settle within ${opts.timeout} s`);
+      const why = verdict(r);
+      if (why && !reason) reason = reports.length > 1 ? `${r.runtime}: ${why}` : why;
+    }
     if (reason) console.error(`render-tileset: FAIL: ${reason.replace(/\s*\n\s*/g, ' ')}`);
     code = reason ? 1 : 0;
   } catch (err) {

@@ -8,8 +8,10 @@
 // camera (JSON {eye, target, up, fovDeg, near, far} in the package's frame, the frame of its
 // content and of `hlod bench`: Y up for scenes from glTF and AC3D; the view is then not framed
 // automatically), shading (pbr: the glTF materials with two lights, the default; geometry or
-// textured: the shading of `hlod bench`, bench-shading-three.js).
-// window.__hlodShade(shading) switches the shading of everything loaded and renders once.
+// textured: the shading of `hlod bench`, bench-shading-three.js), cull (none: both sides of
+// every surface in the bench shadings; default: as the glTF material says).
+// window.__hlodShade(shading) switches the shading of everything loaded and renders once;
+// window.__hlodView(camera) moves to another camera and resolves when its tiles are loaded.
 
 import * as THREE from 'three';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
@@ -30,6 +32,7 @@ const settleMs = num('settleMs', 1000);
 const background = parseInt(params.get('bg') || '30343c', 16);
 const fixedCamera = params.get('camera') ? JSON.parse(params.get('camera')) : null;
 let shading = params.get('shading') || 'pbr';
+const cullBackFaces = params.get('cull') !== 'none';
 
 const result = {
   done: false,
@@ -73,7 +76,7 @@ tiles.setResolutionFromRenderer(camera, renderer);
 
 tiles.addEventListener('load-model', (e) => {
   result.tilesLoaded++;
-  if (shading !== 'pbr') applyBenchShading(e.scene, shading);
+  if (shading !== 'pbr') applyBenchShading(e.scene, shading, cullBackFaces);
 });
 tiles.addEventListener('load-error', (e) => {
   result.tilesFailed++;
@@ -107,7 +110,7 @@ function place(view) {
 
 window.__hlodShade = (next) => {
   shading = next;
-  if (next !== 'pbr') applyBenchShading(tiles.group, next);
+  if (next !== 'pbr') applyBenchShading(tiles.group, next, cullBackFaces);
   renderer.render(scene, camera);
   return new Promise((resolve) => requestAnimationFrame(() => resolve(true)));
 };
@@ -165,6 +168,8 @@ function frame() {
 
 const start = performance.now();
 let lastBusy = start;
+let viewStart = start; // when the current view was set (its timeout counts from there)
+let onSettled = null; // resolves window.__hlodView's promise
 
 function busy() {
   const s = tiles.stats;
@@ -179,6 +184,11 @@ function finish() {
     failed: s.failed, visible: s.visible, active: s.active };
   result.elapsedMs = Math.round(performance.now() - start);
   result.done = true;
+  if (onSettled) {
+    const resolve = onSettled;
+    onSettled = null;
+    resolve(true);
+  }
 }
 
 function tick() {
@@ -192,7 +202,7 @@ function tick() {
     finish();
     return;
   }
-  if (now - start >= timeoutMs) {
+  if (now - viewStart >= timeoutMs) {
     result.timedOut = true;
     finish();
     return;
@@ -200,3 +210,14 @@ function tick() {
   requestAnimationFrame(tick);
 }
 requestAnimationFrame(tick);
+
+// Another camera (as the `camera` parameter): resolves once loading has settled for it.
+window.__hlodView = (view) =>
+  new Promise((resolve) => {
+    place(view);
+    result.done = false;
+    viewStart = performance.now();
+    lastBusy = viewStart;
+    onSettled = resolve;
+    requestAnimationFrame(tick);
+  });
