@@ -177,3 +177,25 @@ TEST_P(RuntimeScene, PackageIsCleanAndRuntimesDrawWhatTheBenchDraws) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedScenes, RuntimeScene, ::testing::ValuesIn(kScenes), sceneName);
+
+// README, "Placing and framing a package in a runtime": a package built without --geo, put on
+// the globe in CesiumJS with an east-north-up model matrix and framed with the view it carries
+// (tileset.json extras.hlod.view), shows the scene; three.js frames it with the same view.
+TEST(RuntimePlacement, LocalPackageIsPlacedAndFramedWithTheViewItCarries) {
+    TempDir tmp;
+    const fs::path pkg = tmp.path / "pkg";
+    const auto b = runCli({"build", "-o", pkg.string(), "--threads", "2", "--no-cache"}, 600);
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    const auto w = runProcess({"node", webScript("render-tileset.mjs"), pkg.string(),
+                               (tmp.path / "placed.png").string(), "--runtime", "three,cesium",
+                               "--place", "11.97,57.7,10", "--timeout", "240"},
+                              600);
+    ASSERT_EQ(w.exitCode, 0) << w.out.substr(0, 3000) << w.err;
+    for (const nlohmann::json& report : nlohmann::json::parse(w.out)["runs"]) {
+        const std::string runtime = report["runtime"];
+        EXPECT_TRUE(report["viewFromPackage"].get<bool>()) << runtime;
+        EXPECT_GT(report["tilesLoaded"].get<int>(), 0) << runtime;
+        // The sample yard seen whole from 35° above: a good part of the picture.
+        EXPECT_GT(report["nonBackgroundPixelShare"].get<double>(), 0.1) << runtime;
+    }
+}
