@@ -92,6 +92,17 @@ class RuntimeScene : public ::testing::TestWithParam<SharedScene> {};
 
 constexpr int kWidth = 640, kHeight = 360;
 
+// Back faces: the bench culls them unless a material is double-sided once materials are kept as
+// authored (issue 28's other half: pipeline/proxy/ProxyLook.h and the culling in
+// OffscreenRenderer), as the runtimes do by default. Before that it draws both sides, and the
+// runtimes are told to draw both sides too (--cull none), so the comparison still measures
+// everything else (the OCCT kitchen's room, seen from outside, is all back faces).
+#if __has_include("pipeline/proxy/ProxyLook.h")
+constexpr const char* kCull = "gltf";
+#else
+constexpr const char* kCull = "none";
+#endif
+
 } // namespace
 
 TEST_P(RuntimeScene, PackageIsCleanAndRuntimesDrawWhatTheBenchDraws) {
@@ -152,7 +163,9 @@ TEST_P(RuntimeScene, PackageIsCleanAndRuntimesDrawWhatTheBenchDraws) {
                                           "--error-target",
                                           std::to_string(errorTarget),
                                           "--timeout",
-                                          "240"};
+                                          "240",
+                                          "--cull",
+                                          kCull};
     const auto w = runProcess(render, 600);
     ASSERT_EQ(w.exitCode, 0) << w.out.substr(0, 3000) << w.err;
     const auto runs = nlohmann::json::parse(w.out)["runs"];
