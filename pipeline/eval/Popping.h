@@ -12,8 +12,10 @@
 // carried(f) is the configuration's previous frame moved on by the change the original shows;
 // if the configuration's image changed exactly as the original's did, H(f) = carried(f) and
 // pop(f) = 0. A still camera gives carried(f) = H(f - 1): the pop is then the FLIP of the switch
-// itself. Frames without a switch have no pop (the error of a configuration that does not
-// switch can still drift as the camera moves; that is the per-frame FLIP's business).
+// itself. Frames without a switch have no pop. The error of a configuration also drifts as the
+// camera moves without any switch (a proxy's silhouette sliding against the original's), and at
+// a switch frame that drift is part of the value: with the camera moving, pop is an upper
+// bound of what the switch alone changed.
 //
 // Switch. The selection is the set of drawn units (tiles, tree nodes or DLOD levels) of a frame;
 // units form a forest given by `parent`. A switch between two frames is a unit drawn in one of
