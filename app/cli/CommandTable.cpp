@@ -122,6 +122,12 @@ std::vector<CommandSpec> makeCommands() {
            "leaf group's meshes merged per look, one draw each); nodes: one draw per selected "
            "node or leaf mesh (the thesis' count).",
            "package"},
+          {"--frame-images", "", "",
+           "Also write every frame of every configuration as frames/NNNNN-KEY.png and its "
+           "camera as frames/NNNNN-camera.json.",
+           ""},
+          {"--cache", "", "DIR", "Proxy cache folder (the one hlod build uses by default).",
+           "~/.cache/hlod/proxies"},
           {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
     return v;
 }

@@ -1,9 +1,10 @@
 // `hlod bench [SCENE...] --out DIR [--frames N] [--size WxH] [--configs LIST]
 // [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]
-// [--proxy-textures on|off] [--draw package|nodes]`:
+// [--proxy-textures on|off] [--draw package|nodes] [--frame-images]`:
 // the thesis' evaluation on one scene (see bench/BenchRun.h for what is measured and how).
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
-// side_by_side_*.png. Needs an X display (xvfb-run -a on a headless machine).
+// side_by_side_*.png (and frames/*.png with --frame-images). Needs an X display (xvfb-run -a on a
+// headless machine).
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -100,6 +101,7 @@ int runBench(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument,
                     "--shading must be geometry, colour or textured, not '" + shading + "'");
     if (!args.has("--no-cache")) o.cacheDir = benchCacheDir();
+    if (auto cache = args.value("--cache"); cache && !args.has("--no-cache")) o.cacheDir = *cache;
     const std::string textures = args.value("--proxy-textures", "on");
     if (textures != "on" && textures != "off")
         throw Error(ErrorCode::InvalidArgument,
@@ -110,6 +112,7 @@ int runBench(const CommandArgs& argv) {
         throw Error(ErrorCode::InvalidArgument,
                     "--draw must be package or nodes, not '" + draw + "'");
     o.draw = draw == "package" ? HlodDraw::Package : HlodDraw::Nodes;
+    o.frameImages = args.has("--frame-images");
     if (const char* d = std::getenv("DISPLAY"); !d || !*d)
         throw Error(ErrorCode::InvalidArgument,
                     "bench renders with VTK, which needs an X display here (Debian's VTK has no "

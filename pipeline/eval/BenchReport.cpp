@@ -46,6 +46,13 @@ std::vector<ConfigSummary> summarizeFrames(const std::vector<FrameRecord>& recor
             s.psnrMin = std::min(s.psnrMin, r->psnrDb);
             s.diffShareMean += r->diffShare;
             s.selectionUsMean += r->selectionUs;
+            s.flipMean += r->flip;
+            s.flipMax = std::max(s.flipMax, r->flip);
+            if (r->lodSwitch) {
+                ++s.switches;
+                s.popMean += r->pop;
+                s.popMax = std::max(s.popMax, r->pop);
+            }
             ms.push_back(r->frameMs);
         }
         const double n = static_cast<double>(v.size());
@@ -55,6 +62,8 @@ std::vector<ConfigSummary> summarizeFrames(const std::vector<FrameRecord>& recor
         s.psnrMean /= n;
         s.diffShareMean /= n;
         s.selectionUsMean /= n;
+        s.flipMean /= n;
+        if (s.switches > 0) s.popMean /= s.switches;
         s.frameMsP95 = percentile(ms, 95.0);
         out.push_back(s);
     }
@@ -70,11 +79,12 @@ std::string framesCsv(const std::vector<FrameRecord>& records) {
             if (c == '"') name += '"';
             name += c;
         }
-        std::snprintf(buf, sizeof(buf), "%d,%.4f,\"%s\",%llu,%llu,%llu,%.4f,%.3f,%.6f\n", r.frame,
+        std::snprintf(buf, sizeof(buf),
+                      "%d,%.4f,\"%s\",%llu,%llu,%llu,%.4f,%.3f,%.6f,%.6f,%d,%.6f\n", r.frame,
                       r.timeSeconds, name.c_str(), static_cast<unsigned long long>(r.drawCalls),
                       static_cast<unsigned long long>(r.triangles),
                       static_cast<unsigned long long>(r.nodesVisited), r.frameMs, r.psnrDb,
-                      r.diffShare);
+                      r.diffShare, r.flip, r.lodSwitch ? 1 : 0, r.pop);
         out += buf;
     }
     return out;
@@ -93,7 +103,9 @@ nlohmann::json summaryJson(const std::vector<ConfigSummary>& summaries,
              {"frame_ms", {{"mean", s.frameMsMean}, {"p95", s.frameMsP95}}},
              {"psnr_db", {{"mean", s.psnrMean}, {"min", s.psnrMin}}},
              {"diff_pixels", {{"mean", s.diffShareMean}}},
-             {"selection_us", {{"mean", s.selectionUsMean}}}});
+             {"selection_us", {{"mean", s.selectionUsMean}}},
+             {"flip", {{"mean", s.flipMean}, {"max", s.flipMax}}},
+             {"pop", {{"switches", s.switches}, {"mean", s.popMean}, {"max", s.popMax}}}});
     }
     return j;
 }
@@ -134,19 +146,23 @@ std::string tablesMarkdown(const std::string& title, const std::vector<GeometryS
         out += "\n";
     }
     if (!summaries.empty()) {
-        out += "Along the camera path (per frame; PSNR against the Original frame, capped at "
-               "100 dB):\n\n"
+        out += "Along the camera path (per frame; PSNR and FLIP against the Original frame, PSNR "
+               "capped at 100 dB; pop: FLIP of what a level switch changes beyond the Original's "
+               "own change, over the frames with a switch):\n\n"
                "| Version | Draw calls (mean) | Draw calls (max) | Triangles (mean) | "
                "Frame ms (mean) | Frame ms (p95) | PSNR dB (mean) | PSNR dB (min) | "
-               "Pixels differing (mean) | Selection us (mean) |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               "Pixels differing (mean) | Selection us (mean) | FLIP (mean) | FLIP (max) | "
+               "Switches | Pop (mean) | Pop (max) |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
         for (const ConfigSummary& s : summaries) {
             std::snprintf(buf, sizeof(buf),
-                          "| %s | %.1f | %llu | %s | %.2f | %.2f | %.1f | %.1f | %.2f%% | %.1f |\n",
+                          "| %s | %.1f | %llu | %s | %.2f | %.2f | %.1f | %.1f | %.2f%% | %.1f | "
+                          "%.4f | %.4f | %d | %.4f | %.4f |\n",
                           s.config.c_str(), s.drawCallsMean,
                           static_cast<unsigned long long>(s.drawCallsMax),
                           count(s.trianglesMean).c_str(), s.frameMsMean, s.frameMsP95, s.psnrMean,
-                          s.psnrMin, s.diffShareMean * 100.0, s.selectionUsMean);
+                          s.psnrMin, s.diffShareMean * 100.0, s.selectionUsMean, s.flipMean,
+                          s.flipMax, s.switches, s.popMean, s.popMax);
             out += buf;
         }
     }

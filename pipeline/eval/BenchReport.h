@@ -28,6 +28,9 @@ struct FrameRecord {
     double selectionUs = 0.0;       // LOD selection (and culling) time
     double psnrDb = 0.0;            // against the Original frame (ImageError.h: capped)
     double diffShare = 0.0;         // share of pixels differing by more than the threshold
+    double flip = 0.0;              // mean FLIP against the Original frame (Flip.h), [0, 1]
+    bool lodSwitch = false;         // the selection switched a level since the previous frame
+    double pop = 0.0;               // Popping.h, at a switch (0 otherwise), [0, 1]
 };
 
 struct ConfigSummary {
@@ -42,6 +45,11 @@ struct ConfigSummary {
     double psnrMin = 0.0;
     double diffShareMean = 0.0;
     double selectionUsMean = 0.0;
+    double flipMean = 0.0;
+    double flipMax = 0.0;
+    int switches = 0;     // frames with a level-of-detail switch
+    double popMean = 0.0; // over the frames with a switch (0 without any)
+    double popMax = 0.0;
 };
 
 // One summary per configuration, in order of first appearance in `records`.
@@ -50,15 +58,18 @@ std::vector<ConfigSummary> summarizeFrames(const std::vector<FrameRecord>& recor
 // Nearest-rank percentile (p in [0, 100]) of `values`; 0 for none.
 double percentile(std::vector<double> values, double p);
 
-// Header: frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels
-// (diff_pixels is the share in [0, 1]); the config is quoted (names contain commas).
+// Header: frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels,
+// flip,lod_switch,pop (diff_pixels is the share in [0, 1]; flip and pop in [0, 1]; lod_switch 0
+// or 1, pop 0 where it is 0); the config is quoted (names contain commas).
 std::string framesCsv(const std::vector<FrameRecord>& records);
 inline constexpr const char* kFramesCsvHeader =
-    "frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels";
+    "frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels,flip,"
+    "lod_switch,pop";
 
 // {"configs": [{"config": ..., "draw_calls": {"mean", "max"}, "triangles": {"mean"},
 //   "frame_ms": {"mean", "p95"}, "psnr_db": {"mean", "min"}, "diff_pixels": {"mean"},
-//   "selection_us": {"mean"}, "frames"}], ...`extra` merged at the top level}
+//   "selection_us": {"mean"}, "flip": {"mean", "max"}, "pop": {"switches", "mean", "max"},
+//   "frames"}], ...`extra` merged at the top level}
 nlohmann::json summaryJson(const std::vector<ConfigSummary>& summaries,
                            const nlohmann::json& extra = nlohmann::json::object());
 

@@ -1,6 +1,7 @@
 // The engine-ready HLOD package (DESIGN.md "The package"; issue 18, a compact package):
 //   DIR/tileset.json          OGC 3D Tiles 1.1, refine REPLACE, box bounding volumes,
-//                             geometricError = the node's proxy error (0 for leaf groups)
+//                             geometricError = the node's proxy error (0 for leaf groups),
+//                             extras.hlod: placement and a view that frames it (Placement.h)
 //   DIR/tiles/HASH.glb        glTF 2.0 content, named by its bytes' hash: a proxy, or the leaves
 //                             under one node (PackageLayout.h); equal contents are one file
 //   DIR/tiles/textures/HASH.* the leaves' base colour textures, once each

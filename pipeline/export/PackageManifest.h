@@ -2,7 +2,7 @@
 // tileset. One JSON object:
 //   format, formatVersion (2), generator, source.inputs, contentUpAxis ("Y"), screen (S, t,
 //   fov, viewport, maximumScreenSpaceError), volume, k, proxyMethod, compression, parameters,
-//   statistics, root (node id),
+//   statistics, root (node id), placement (Placement.h, added by the package writer),
 //   files:  the package's content files (relative paths),
 //   tiles:  per tile {node (or null for a leaf group), parent tile (-1 at the root), file
 //           (index into files, -1 = no content), frame: "translation" [x, y, z] or "matrix"

@@ -13,6 +13,7 @@
 #include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
 #include "pipeline/export/PackageManifest.h"
+#include "pipeline/export/Placement.h"
 #include "pipeline/export/TileContent.h"
 #include "pipeline/proxy/ContentHash.h"
 
@@ -118,9 +119,16 @@ std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResu
     }
     for (const auto& [uri, bytes] : textures.files())
         sink.add("tiles/" + uri, bytes);
-    sink.addText("tileset.json", buildTileset(layout, uris, options.geo).dump());
+    // Where the scene is and how to frame it, for runtimes (Placement.h).
+    const Placement placement = packagePlacement(scene);
+    nlohmann::json tileset = buildTileset(layout, uris, options.geo);
+    tileset["extras"] = {
+        {"hlod", placementTilesetJson(placement, options.geo, bakeParams.screen.pixelError)}};
+    sink.addText("tileset.json", tileset.dump());
     const ManifestInput manifest{scene, tree, bake, bakeParams, options, layout, uris, encoded};
-    sink.addText("hlod.json", buildManifest(manifest).dump());
+    nlohmann::json hlodJson = buildManifest(manifest);
+    hlodJson["placement"] = placementManifestJson(placement, options.geo);
+    sink.addText("hlod.json", hlodJson.dump());
     progress.throwIfCancelled();
     return layout.tiles.size();
 }

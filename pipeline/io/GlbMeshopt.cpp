@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <mutex>
 
@@ -119,6 +120,16 @@ std::vector<std::uint32_t> exponentialUvs(std::span<const glm::vec2> uvs) {
     }
     std::vector<std::uint32_t> out(uvs.size() * 2, 0);
     if (!uvs.empty()) meshopt_encodeFilterExp(out.data(), uvs.size(), 8, 16, in.data());
+    return out;
+}
+
+std::vector<std::uint8_t> decodedAttributes(const void* data, std::size_t count, std::size_t stride,
+                                            const char* filter) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    std::vector<std::uint8_t> out(p, p + count * stride);
+    if (count == 0 || filter == nullptr) return out;
+    if (std::strcmp(filter, "OCTAHEDRAL") == 0) meshopt_decodeFilterOct(out.data(), count, stride);
+    if (std::strcmp(filter, "EXPONENTIAL") == 0) meshopt_decodeFilterExp(out.data(), count, stride);
     return out;
 }
 

@@ -60,6 +60,12 @@ std::vector<std::int8_t> octahedralNormals(std::span<const glm::vec3> normals);
 // 2 words per uv (meshopt_encodeFilterExp, 16-bit mantissa, exponent shared by u and v).
 std::vector<std::uint32_t> exponentialUvs(std::span<const glm::vec2> uvs);
 
+// What a decoder makes of a stream stored with `filter` (nullptr or "NONE", "OCTAHEDRAL",
+// "EXPONENTIAL"): meshopt_decodeFilter* applied to a copy of `count` elements of `stride` bytes.
+// The vertex codec itself is lossless, so this is the stream's content once decoded.
+std::vector<std::uint8_t> decodedAttributes(const void* data, std::size_t count, std::size_t stride,
+                                            const char* filter);
+
 // meshopt_encodeVertexBuffer of `count` elements of `stride` bytes (a multiple of 4, <= 256).
 std::vector<std::uint8_t> compressAttributes(const void* data, std::size_t count,
                                              std::size_t stride);

@@ -283,14 +283,67 @@ int addIndices(Doc& doc, std::span<const std::uint32_t> indices, std::size_t ver
                         "SCALAR");
 }
 
-// Every stream as one buffer view; the accessors pointed at theirs.
+const char* filterOf(Stream s) {
+    return s == kNormals ? "OCTAHEDRAL" : s == kUvs ? "EXPONENTIAL" : "NONE";
+}
+
+// With compression and no image in buffer 0, the accessor whose data is also stored plain there
+// (GlbWriter.h): the one smallest once decoded, as an index into doc.streamAccessors; -1 when
+// nothing is needed.
+int plainAccessor(const Doc& doc) {
+    if (!doc.meshopt || (doc.gltf.contains("bufferViews") && !doc.gltf["bufferViews"].empty()))
+        return -1;
+    int best = -1;
+    std::size_t bestBytes = 0;
+    for (std::size_t i = 0; i < doc.streamAccessors.size(); ++i) {
+        const auto& [accessor, stream] = doc.streamAccessors[i];
+        const std::size_t count = doc.gltf["accessors"][std::size_t(accessor)]["count"];
+        const std::size_t bytes = count * strideOf(stream, true);
+        if (best < 0 || bytes < bestBytes) {
+            best = static_cast<int>(i);
+            bestBytes = bytes;
+        }
+    }
+    return best;
+}
+
+// A plain view in buffer 0 holding `count` elements of stream `s` from element `first` on, as
+// a decoder of the compressed stream would produce them.
+int plainCopy(Doc& doc, Stream s, std::size_t first, std::size_t count) {
+    const StreamData& d = doc.streams[s];
+    if (s == kIndices16) {
+        const std::vector<std::uint16_t> narrow(d.indices.begin() + first,
+                                                d.indices.begin() + first + count);
+        return doc.plainView(narrow.data(), count * 2, kElementArrayBuffer);
+    }
+    if (s == kIndices32) return doc.plainView(&d.indices[first], count * 4, kElementArrayBuffer);
+    const std::size_t stride = strideOf(s, doc.meshopt);
+    const std::vector<std::uint8_t> bytes =
+        decodedAttributes(d.bytes.data() + first * stride, count, stride, filterOf(s));
+    return doc.plainView(bytes.data(), bytes.size(), kArrayBuffer, stride);
+}
+
+// Every stream as one buffer view; the accessors pointed at theirs. With compression, the
+// plain accessor (plainAccessor) reads its own plain copy instead (the compressed stream keeps
+// its data too, so the other accessors' offsets stay; a stream it was alone in is not written
+// compressed at all).
 void finishStreams(Doc& doc) {
+    const int plain = plainAccessor(doc);
+    // A stream whose only accessor is the plain one gets no compressed view (it would be unused).
+    int onlyPlain = -1;
+    if (plain >= 0) {
+        const Stream s = doc.streamAccessors[std::size_t(plain)].second;
+        int users = 0;
+        for (const auto& sa : doc.streamAccessors)
+            users += sa.second == s;
+        if (users == 1) onlyPlain = s;
+    }
     int viewOf[kStreams];
     for (int s = 0; s < kStreams; ++s) {
         const Stream stream = static_cast<Stream>(s);
         StreamData& d = doc.streams[s];
         viewOf[s] = -1;
-        if (d.count == 0) continue;
+        if (d.count == 0 || s == onlyPlain) continue;
         const std::size_t stride = strideOf(stream, doc.meshopt);
         const bool indices = stream == kIndices16 || stream == kIndices32;
         if (doc.meshopt && indices) {
@@ -300,11 +353,9 @@ void finishStreams(Doc& doc) {
             viewOf[s] = doc.meshoptView(compressTriangles(d.indices, std::size_t(top) + 1), d.count,
                                         stride, kElementArrayBuffer, "TRIANGLES", "NONE");
         } else if (doc.meshopt) {
-            const char* filter = stream == kNormals ? "OCTAHEDRAL"
-                                 : stream == kUvs   ? "EXPONENTIAL"
-                                                    : "NONE";
-            viewOf[s] = doc.meshoptView(compressAttributes(d.bytes.data(), d.count, stride),
-                                        d.count, stride, kArrayBuffer, "ATTRIBUTES", filter);
+            viewOf[s] =
+                doc.meshoptView(compressAttributes(d.bytes.data(), d.count, stride), d.count,
+                                stride, kArrayBuffer, "ATTRIBUTES", filterOf(stream));
         } else if (stream == kIndices16) {
             const std::vector<std::uint16_t> narrow(d.indices.begin(), d.indices.end());
             viewOf[s] = doc.plainView(narrow.data(), d.count * 2, kElementArrayBuffer);
@@ -315,8 +366,17 @@ void finishStreams(Doc& doc) {
             viewOf[s] = doc.plainView(d.bytes.data(), d.bytes.size(), kArrayBuffer, stride);
         }
     }
-    for (const auto& [accessor, stream] : doc.streamAccessors)
-        doc.gltf["accessors"][std::size_t(accessor)]["bufferView"] = viewOf[stream];
+    for (std::size_t i = 0; i < doc.streamAccessors.size(); ++i) {
+        const auto& [accessor, stream] = doc.streamAccessors[i];
+        nlohmann::json& a = doc.gltf["accessors"][std::size_t(accessor)];
+        if (static_cast<int>(i) != plain) {
+            a["bufferView"] = viewOf[stream];
+            continue;
+        }
+        const std::size_t first = a.value("byteOffset", std::size_t(0)) / strideOf(stream, true);
+        a.erase("byteOffset");
+        a["bufferView"] = plainCopy(doc, stream, first, a["count"].get<std::size_t>());
+    }
 }
 
 // The node's TRS composed with its mesh's dequantization: frame = T R S (offset + step q).

@@ -25,8 +25,13 @@
 // required (GlbMeshopt.h: 16-bit grid positions whose offset and step the referencing nodes'
 // transforms carry, octahedral normals, exponential uvs, meshopt vertex and index codecs; each
 // buffer view compressed as one stream). The compressed streams live in buffer 0 (the BIN
-// chunk); buffer 1 is the extension's fallback buffer without data. None: plain float
-// attributes, nothing required.
+// chunk); buffer 1 is the extension's fallback buffer without data. Validators that do not
+// know the extension (the Khronos glTF validator) see buffer 0 used only through it and report
+// it "may be unused"; so when nothing else (an embedded image) is in buffer 0, the accessor
+// smallest once decoded (in a leaf group, one small mesh's normals or colours; in a single
+// mesh, its normals: 4 bytes a vertex) also gets a plain copy of its data there, its decoded
+// bytes, the same a meshopt decoder makes, and reads that. None: plain float attributes,
+// nothing required.
 //
 // Output bytes depend only on the input (deterministic, suitable for content hashing).
 // A mesh without triangles is not written (its nodes carry no mesh).

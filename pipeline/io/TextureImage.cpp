@@ -1,5 +1,7 @@
 // See TextureImage.h. PNG/JPEG are recognised by their signatures (PNG: 89 50 4E 47 0D 0A 1A 0A,
-// ISO/IEC 15948; JPEG: FF D8 FF, ITU T.81 SOI marker followed by a marker).
+// ISO/IEC 15948; JPEG: FF D8 FF, ITU T.81 SOI marker followed by a marker). PNG chunks (ISO/IEC
+// 15948 5.3): 4-byte big-endian data length, 4-byte type, data, 4-byte CRC of type and data;
+// bit 5 of the type's first byte (lower case) marks an ancillary chunk.
 #include "pipeline/io/TextureImage.h"
 
 #include <cstring>
@@ -30,7 +32,29 @@ void appendBytes(void* context, void* data, int size) {
     out->insert(out->end(), p, p + size);
 }
 
+std::uint32_t bigEndian32(const std::uint8_t* p) {
+    return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+           std::uint32_t(p[3]);
+}
+
 } // namespace
+
+std::optional<std::vector<std::uint8_t>> pngWithoutMetadata(std::span<const std::uint8_t> png) {
+    if (!isPng(png)) return std::nullopt;
+    std::vector<std::uint8_t> out(png.begin(), png.begin() + 8);
+    std::size_t p = 8;
+    while (p + 12 <= png.size()) {
+        const std::size_t length = bigEndian32(&png[p]);
+        if (length > png.size() - p - 12) return std::nullopt;
+        const std::uint8_t* type = &png[p + 4];
+        const bool ancillary = (type[0] & 0x20) != 0;
+        const bool keep = !ancillary || std::memcmp(type, "tRNS", 4) == 0;
+        if (keep) out.insert(out.end(), png.begin() + p, png.begin() + p + 12 + length);
+        p += 12 + length;
+        if (std::memcmp(type, "IEND", 4) == 0) return out;
+    }
+    return std::nullopt;
+}
 
 std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes) {
     if (bytes.empty() || bytes.size() > static_cast<std::size_t>(INT32_MAX)) return std::nullopt;
@@ -41,7 +65,8 @@ std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes) {
         if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &comp) || w <= 0 || h <= 0) {
             return std::nullopt;
         }
-        return EncodedImage{{bytes.begin(), bytes.end()}, isPng(bytes) ? "image/png" : "image/jpeg"};
+        if (isJpeg(bytes)) return EncodedImage{{bytes.begin(), bytes.end()}, "image/jpeg"};
+        if (auto clean = pngWithoutMetadata(bytes)) return EncodedImage{*clean, "image/png"};
     }
     std::string why;
     const std::optional<RgbaImage> image = decodeImage(bytes, why); // SGI, BMP, TGA, ...

@@ -50,9 +50,9 @@ TEST(Bench, SampleSceneWritesEveryOutput) {
                            "--size", "320x180", "--threads", "2", "--no-cache"},
                           600, 8ull << 30);
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    for (const char* name :
-         {"summary.json", "frames.csv", "tables.md", "camera_path.json", "plot_frame_ms.png",
-          "plot_draw_calls.png", "plot_triangles.png", "plot_psnr.png"}) {
+    for (const char* name : {"summary.json", "frames.csv", "tables.md", "camera_path.json",
+                             "plot_frame_ms.png", "plot_draw_calls.png", "plot_triangles.png",
+                             "plot_psnr.png", "plot_flip.png", "plot_pop.png"}) {
         EXPECT_TRUE(fs::exists(out.path / name)) << name;
         EXPECT_GT(fs::file_size(out.path / name), 100u) << name;
     }
@@ -70,9 +70,8 @@ TEST(Bench, SampleSceneWritesEveryOutput) {
     std::ifstream csv(out.path / "frames.csv");
     std::string line;
     std::getline(csv, line);
-    EXPECT_EQ(
-        line,
-        "frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,diff_pixels");
+    EXPECT_EQ(line, "frame,time_s,config,draw_calls,triangles,nodes_visited,frame_ms,psnr_db,"
+                    "diff_pixels,flip,lod_switch,pop");
     int rows = 0;
     while (std::getline(csv, line))
         if (!line.empty()) ++rows;
@@ -92,6 +91,8 @@ TEST(Bench, SampleSceneWritesEveryOutput) {
         if (c["config"] == "Original") {
             EXPECT_EQ(c["psnr_db"]["mean"].get<double>(), 100.0); // the documented cap
             EXPECT_EQ(c["psnr_db"]["min"].get<double>(), 100.0);
+            EXPECT_EQ(c["flip"]["max"].get<double>(), 0.0); // against itself
+            EXPECT_EQ(c["pop"]["switches"].get<int>(), 0);  // never switches
             originalDraws = c["draw_calls"]["mean"].get<double>();
         }
     }
@@ -103,9 +104,17 @@ TEST(Bench, SampleSceneWritesEveryOutput) {
         if (n.rfind("HLOD", 0) == 0) {
             EXPECT_LT(c["draw_calls"]["mean"].get<double>(), originalDraws) << n;
             EXPECT_GT(c["psnr_db"]["mean"].get<double>(), 20.0) << n;
+            // The fly-in switches levels; each switch's pop and each frame's FLIP are in [0, 1].
+            EXPECT_GT(c["pop"]["switches"].get<int>(), 0) << n;
+            EXPECT_GE(c["pop"]["max"].get<double>(), c["pop"]["mean"].get<double>()) << n;
+            EXPECT_LE(c["pop"]["max"].get<double>(), 1.0) << n;
+            EXPECT_GT(c["flip"]["mean"].get<double>(), 0.0) << n;
+            EXPECT_LT(c["flip"]["max"].get<double>(), 0.5) << n;
         }
     }
     EXPECT_EQ(j["psnr_cap_db"], 100.0);
+    // 180 px over the path's 60 degrees: 90 / tan(30°) x pi / 180 = 2.72 px per degree.
+    EXPECT_NEAR(j["flip_pixels_per_degree"].get<double>(), 2.7207, 1e-3);
 }
 
 TEST(Bench, BadArgumentsAreOneLineUsageErrors) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env node
 // Renders an exported HLOD package (3D Tiles 1.1) in headless Chromium with a real 3D Tiles
-// runtime (three.js + 3d-tiles-renderer) and checks that it loads and shows something.
+// runtime (three.js + 3d-tiles-renderer, or CesiumJS with --runtime cesium) and checks that it
+// loads and shows something.
 //
 // A static HTTP server on 127.0.0.1 (random free port) serves DIR under /tiles/, viewer.html and
 // viewer.js at / and tests/web/node_modules under /node_modules/ (the page's import map points
@@ -10,13 +11,32 @@
 // the background colour is measured by decoding that PNG here (node:zlib, no extra deps).
 //
 // Prints one JSON object on stdout:
-//   {tilesLoaded, tilesFailed, consoleErrors, pageErrors, nonBackgroundPixelShare, ...}
-// Exit 0 when tilesLoaded > 0, tilesFailed == 0, no console/page errors and
-// nonBackgroundPixelShare > 0.01; otherwise exit 1 with a one-line reason on stderr
+//   {tilesLoaded, tilesFailed, consoleErrors, consoleMessages, pageErrors,
+//    nonBackgroundPixelShare, screenshots, ...}
+// Exit 0 when tilesLoaded > 0, tilesFailed == 0, no page errors, no console errors or warnings
+// and nonBackgroundPixelShare > 0.01; otherwise exit 1 with a one-line reason on stderr
 // (2 on bad usage). A loading timeout fails too (timedOut).
 //
-// Usage: node render-tileset.mjs DIR OUT.png [--width W] [--height H] [--timeout SECONDS]
-//                                          [--error-target PX]
+// --camera FILE.json views the package from a given camera instead of framing it: {eye,
+// target, up, fovDeg[, near, far]} in the package's frame (the frame of its content and of
+// `hlod bench`), or a camera path of `hlod bench --path` (its first key); several files
+// separated by commas are visited in turn in the same page (tiles loading for each), the
+// pictures named OUT-vN.png. --shading takes
+// pbr (the runtime's own materials and lights, the default) or geometry / textured, the shading
+// of `hlod bench` (bench-shading-three.js), or several separated by commas: the tiles load once
+// and one picture per shading is saved as OUT-<shading>.png. --no-antialias turns MSAA off (the
+// bench has none), --cull none draws both sides of every surface (a bench that does not cull;
+// default gltf: back faces culled unless the material is double-sided, as engines do),
+// --background RRGGBB sets the clear colour, --place LON,LAT,H (cesium) puts
+// the package on the globe as the README says.
+//
+// --runtime three,cesium renders with both in one browser (a fresh context each) and prints
+// {runs: [report, report]}, the pictures then named OUT-<runtime>[-<shading>].png.
+//
+// Usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium[,...]] [--width W] [--height H]
+//          [--timeout SECONDS] [--error-target PX] [--camera FILE.json]
+//          [--shading pbr|geometry|textured[,...]] [--no-antialias] [--background RRGGBB]
+//          [--place LON,LAT,H]
 
 import fs from 'node:fs';
 import http from 'node:http';
@@ -39,12 +59,19 @@ const CHROMIUM_ARGS = [
   '--disable-quic',
   '--disable-sync',
 ];
-const BACKGROUND = [0x30, 0x34, 0x3c]; // must match the page's default clear colour
+const DEFAULT_BACKGROUND = '30343c'; // the pages' default clear colour
 const BACKGROUND_TOLERANCE = 12; // per channel, absorbs dithering/colour-space rounding
 const MIN_PIXEL_SHARE = 0.01;
+// Console warnings a runtime prints about itself, not about the package: reported as notices.
+// 3d-tiles-renderer 0.5 says this of every 3D Tiles 1.1 tileset (asset.version "1.1", which
+// glTF content without an extension needs).
+const KNOWN_NOTICES = [
+  /^warning: TilesRenderer: tiles versions at 1\.1 or higher have limited support\./,
+];
 
 const MIME = {
   '.html': 'text/html; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
   '.js': 'text/javascript; charset=utf-8',
   '.mjs': 'text/javascript; charset=utf-8',
   '.json': 'application/json; charset=utf-8',
@@ -65,7 +92,10 @@ const MIME = {
 };
 
 function parseArgs(argv) {
-  const opts = { width: 800, height: 600, timeout: 60, errorTarget: 16, positional: [] };
+  const opts = {
+    width: 800, height: 600, timeout: 60, errorTarget: 16, runtimes: ['three'], cameras: [],
+    shading: ['pbr'], antialias: true, cull: 'gltf', background: DEFAULT_BACKGROUND, place: null, positional: [],
+  };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
     const value = () => {
@@ -77,12 +107,45 @@ function parseArgs(argv) {
     else if (a === '--height') opts.height = Math.round(value());
     else if (a === '--timeout') opts.timeout = value();
     else if (a === '--error-target') opts.errorTarget = value();
-    else if (a.startsWith('--')) throw new Error(`unknown option ${a}`);
+    else if (a === '--runtime') {
+      opts.runtimes = String(argv[++i]).split(',');
+      if (!opts.runtimes.every((r) => r === 'three' || r === 'cesium')) throw new Error('--runtime takes three, cesium');
+    } else if (a === '--camera') opts.cameras = String(argv[++i]).split(',').map(readCamera);
+    else if (a === '--shading') {
+      opts.shading = String(argv[++i]).split(',');
+      if (!opts.shading.every((s) => ['pbr', 'geometry', 'textured'].includes(s))) {
+        throw new Error('--shading takes pbr, geometry, textured');
+      }
+    } else if (a === '--no-antialias') opts.antialias = false;
+    else if (a === '--cull') {
+      opts.cull = argv[++i];
+      if (opts.cull !== 'gltf' && opts.cull !== 'none') throw new Error('--cull takes gltf or none');
+    }
+    else if (a === '--background') {
+      opts.background = String(argv[++i]).toLowerCase();
+      if (!/^[0-9a-f]{6}$/.test(opts.background)) throw new Error('--background takes RRGGBB');
+    } else if (a === '--place') {
+      opts.place = String(argv[++i]);
+      if (!/^-?[\d.]+,-?[\d.]+(,-?[\d.]+)?$/.test(opts.place)) throw new Error('--place takes LON,LAT[,H]');
+    } else if (a.startsWith('--')) throw new Error(`unknown option ${a}`);
     else opts.positional.push(a);
   }
   if (opts.positional.length !== 2) throw new Error('expected DIR and OUT.png');
   [opts.dir, opts.out] = opts.positional;
   return opts;
+}
+
+/** A camera file: {eye, target, up, fovDeg, near?, far?}, or a bench camera path (first key). */
+function readCamera(file) {
+  const j = JSON.parse(fs.readFileSync(file, 'utf8'));
+  if (Array.isArray(j.keys)) {
+    return { eye: j.keys[0].eye, target: j.keys[0].target, up: j.up || [0, 1, 0], fovDeg: j.fov_deg || 60 };
+  }
+  for (const k of ['eye', 'target', 'up']) {
+    if (!Array.isArray(j[k]) || j[k].length !== 3) throw new Error(`${file}: ${k} must be 3 numbers`);
+  }
+  if (!(j.fovDeg > 0 && j.fovDeg < 180)) throw new Error(`${file}: fovDeg must be in (0, 180)`);
+  return j;
 }
 
 /** Serves fixed files and two directory trees; never anything outside them. */
@@ -95,6 +158,9 @@ function startServer(tilesDir) {
     '/': path.join(HERE, 'viewer.html'),
     '/viewer.html': path.join(HERE, 'viewer.html'),
     '/viewer.js': path.join(HERE, 'viewer.js'),
+    '/bench-shading-three.js': path.join(HERE, 'bench-shading-three.js'),
+    '/cesium.html': path.join(HERE, 'cesium.html'),
+    '/cesium-viewer.js': path.join(HERE, 'cesium-viewer.js'),
   };
   const httpErrors = [];
   const server = http.createServer((req, res) => {
@@ -185,7 +251,8 @@ function decodePng(buf) {
   return { width, height, channels, pixels };
 }
 
-function nonBackgroundShare(png) {
+function nonBackgroundShare(png, background) {
+  const BACKGROUND = [0, 2, 4].map((k) => parseInt(background.slice(k, k + 2), 16));
   const { width, height, channels, pixels } = png;
   let count = 0;
   for (let i = 0; i < width * height; ++i) {
@@ -202,9 +269,19 @@ const withTimeout = (promise, ms, what) =>
     new Promise((_, reject) => setTimeout(() => reject(new Error(`${what} timed out after ${ms} ms`)), ms).unref()),
   ]);
 
+// The picture file of `runtime`, camera `view` and `shading`: OUT, or with -RUNTIME, -vVIEW and
+// -SHADING before .png as far as there are several.
+function outName(opts, runtime, view, shading) {
+  let suffix = opts.runtimes.length > 1 ? `-${runtime}` : '';
+  if (opts.cameras.length > 1) suffix += `-v${view}`;
+  if (opts.shading.length > 1) suffix += `-${shading}`;
+  return suffix ? opts.out.replace(/(\.png)?$/i, `${suffix}.png`) : opts.out;
+}
+
 async function run(opts, state) {
   if (!fs.existsSync(path.join(opts.dir, 'tileset.json'))) throw new Error(`no tileset.json in ${opts.dir}`);
-  if (!fs.existsSync(path.join(HERE, 'node_modules', '3d-tiles-renderer'))) {
+  if (!fs.existsSync(path.join(HERE, 'node_modules', '3d-tiles-renderer')) ||
+      !fs.existsSync(path.join(HERE, 'node_modules', 'cesium'))) {
     throw new Error('tests/web/node_modules missing: run npm ci in tests/web');
   }
   const { server, httpErrors, port } = await startServer(opts.dir);
@@ -216,15 +293,34 @@ async function run(opts, state) {
     args: CHROMIUM_ARGS,
     timeout: 30000,
   }); // playwright gives the browser a fresh temporary profile and deletes it on close
-  const context = await state.browser.newContext({
+  const reports = [];
+  for (const runtime of opts.runtimes) {
+    const before = httpErrors.length;
+    const report = await renderWith(opts, runtime, state.browser, port);
+    report.httpErrors = httpErrors.slice(before);
+    reports.push(report);
+  }
+  return reports.length === 1 ? reports[0] : { runs: reports };
+}
+
+// One runtime in its own browser context (a page of its own, nothing shared).
+async function renderWith(opts, runtime, browser, port) {
+  const context = await browser.newContext({
     viewport: { width: opts.width, height: opts.height },
     deviceScaleFactor: 1,
   });
   const page = await context.newPage();
-  const consoleErrors = [];
+  const consoleErrors = []; // errors and warnings
+  const consoleMessages = []; // anything else the page logs
   const pageErrors = [];
   page.on('console', (msg) => {
-    if (msg.type() === 'error') consoleErrors.push(msg.text());
+    const type = msg.type();
+    const text = `${type}: ${msg.text()}`;
+    if ((type === 'error' || type === 'warning') && !KNOWN_NOTICES.some((r) => r.test(text))) {
+      consoleErrors.push(text);
+    } else {
+      consoleMessages.push(text);
+    }
   });
   page.on('pageerror', (err) => pageErrors.push(String(err && err.stack ? err.message : err)));
 
@@ -233,9 +329,15 @@ async function run(opts, state) {
     h: opts.height,
     errorTarget: opts.errorTarget,
     timeoutMs: Math.round(opts.timeout * 1000),
-    bg: BACKGROUND.map((v) => v.toString(16).padStart(2, '0')).join(''),
+    bg: opts.background,
+    shading: opts.shading[0],
+    antialias: opts.antialias ? '1' : '0',
+    cull: opts.cull === 'none' ? 'none' : 'gltf',
   });
-  await page.goto(`http://127.0.0.1:${port}/viewer.html?${query}`, { timeout: 15000 });
+  if (opts.cameras.length) query.set('camera', JSON.stringify(opts.cameras[0]));
+  if (opts.place) query.set('place', opts.place);
+  const pageName = runtime === 'cesium' ? 'cesium.html' : 'viewer.html';
+  await page.goto(`http://127.0.0.1:${port}/${pageName}?${query}`, { timeout: 15000 });
   let result;
   try {
     await page.waitForFunction(() => window.__hlodResult && window.__hlodResult.done, null, {
@@ -253,24 +355,50 @@ async function run(opts, state) {
   }
 
   fs.mkdirSync(path.dirname(path.resolve(opts.out)), { recursive: true });
-  const png = await page.locator('canvas').screenshot({ path: opts.out, timeout: 15000 });
-  const share = nonBackgroundShare(decodePng(png));
+  const screenshots = [];
+  const views = [];
+  let share = 0;
+  let current = opts.shading[0];
+  for (let v = 0; v < Math.max(opts.cameras.length, 1); ++v) {
+    if (v > 0) {
+      await page.evaluate((cam) => window.__hlodView(cam), opts.cameras[v]);
+      result = await page.evaluate(() => window.__hlodResult);
+    }
+    views.push({ timedOut: result.timedOut, elapsedMs: result.elapsedMs, stats: result.stats });
+    for (const shading of opts.shading) {
+      const out = outName(opts, runtime, v, shading);
+      if (!result.timedOut && shading !== current) {
+        await page.evaluate((s) => window.__hlodShade(s), shading);
+        current = shading;
+      }
+      const png = await page.locator('canvas').first().screenshot({ path: out, timeout: 15000 });
+      share = Math.max(share, nonBackgroundShare(decodePng(png), opts.background));
+      screenshots.push(out);
+    }
+  }
 
-  return {
+  const report = {
     tilesLoaded: result.tilesLoaded,
     tilesFailed: result.tilesFailed,
     consoleErrors,
+    consoleMessages,
     pageErrors,
     nonBackgroundPixelShare: Number(share.toFixed(4)),
     failures: result.failures,
-    httpErrors,
+    httpErrors: [],
     timedOut: result.timedOut,
     framed: result.framed,
+    viewFromPackage: Boolean(result.viewFromPackage),
     sphere: result.sphere,
     stats: result.stats,
     elapsedMs: result.elapsedMs,
-    screenshot: opts.out,
+    screenshot: screenshots[0],
+    screenshots,
+    views,
+    runtime,
   };
+  await context.close();
+  return report;
 }
 
 function verdict(report) {
@@ -292,7 +420,9 @@ async function main() {
     opts = parseArgs(process.argv.slice(2));
   } catch (err) {
     console.error(`render-tileset: ${err.message}`);
-    console.error('usage: node render-tileset.mjs DIR OUT.png [--width W] [--height H] [--timeout S] [--error-target PX]');
+    console.error('usage: node render-tileset.mjs DIR OUT.png [--runtime three|cesium] [--width W] [--height H] ' +
+      '[--timeout S] [--error-target PX] [--camera FILE.json] [--shading pbr|geometry|textured[,...]] ' +
+      '[--no-antialias] [--background RRGGBB] [--place LON,LAT,H]');
     return 2;
   }
 
@@ -308,17 +438,23 @@ async function main() {
     }
   };
   // Last resort if anything hangs: playwright kills the browsers it launched on process exit.
+  const limit = (opts.timeout + 60) * opts.runtimes.length * Math.max(opts.cameras.length, 1);
   const watchdog = setTimeout(() => {
-    console.error(`render-tileset: watchdog: gave up after ${opts.timeout + 60} s`);
+    console.error(`render-tileset: watchdog: gave up after ${limit} s`);
     process.exit(1);
-  }, (opts.timeout + 60) * 1000);
+  }, limit * 1000);
 
   let code = 1;
   try {
     const report = await run(opts, state);
     console.log(JSON.stringify(report));
-    if (report.timedOut) console.error(`render-tileset: warning: loading did not settle within ${opts.timeout} s`);
-    const reason = verdict(report);
+    const reports = report.runs || [report];
+    let reason = null;
+    for (const r of reports) {
+      if (r.timedOut) console.error(`render-tileset: warning: ${r.runtime}: loading did not settle within ${opts.timeout} s`);
+      const why = verdict(r);
+      if (why && !reason) reason = reports.length > 1 ? `${r.runtime}: ${why}` : why;
+    }
     if (reason) console.error(`render-tileset: FAIL: ${reason.replace(/\s*\n\s*/g, ' ')}`);
     code = reason ? 1 : 0;
   } catch (err) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -13,9 +15,11 @@
 #include <tbb/task_arena.h>
 
 #include "../ProgressBar.h"
+#include "FrameMetrics.h"
 #include "pipeline/core/Error.h"
 #include "pipeline/doc/HlodBuild.h"
 #include "pipeline/eval/BenchReport.h"
+#include "pipeline/eval/Flip.h"
 #include "pipeline/eval/ImageError.h"
 #include "pipeline/eval/Plot.h"
 #include "pipeline/export/PackageLayout.h"
@@ -144,12 +148,21 @@ void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& rende
     }
 }
 
-// The package's tiles a 3D Tiles runtime draws for `camera` (REPLACE refinement): a tile whose
-// bounding box misses the frustum is skipped with everything below it; a node's tile is
-// refined where Algorithm 5 refines the node (its geometric error is set for that, Package.h);
-// a leaf-group tile is drawn whenever it is reached.
-void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& frustum,
-                   std::vector<int>& draw, FrameRecord& r) {
+// Distance from `p` to the box (0 inside).
+double distanceToBox(const Aabb& box, const glm::dvec3& p) {
+    const glm::dvec3 d = glm::max(glm::max(box.min - p, p - box.max), glm::dvec3(0.0));
+    return glm::length(d);
+}
+
+// The package's tiles a 3D Tiles runtime draws for `camera` (REPLACE refinement), as
+// 3d-tiles-renderer and CesiumJS select them: a tile whose bounding box misses the frustum is
+// skipped with everything below it; a tile with children is refined when its screen-space
+// error, geometricError x (pixels per unit at distance 1) / (distance from the eye to its box),
+// exceeds `maxError` pixels (always inside its box); a tile without children is drawn whenever
+// it is reached. (Algorithm 5 measures the distance to a node's centre instead, so a runtime
+// refines somewhat farther away than the node count does.)
+void selectPackage(const Config& c, const Camera& cam, double maxError, const Frustum& frustum,
+                   std::vector<int>& draw, std::vector<int>& tiles, FrameRecord& r) {
     const PackageLayout& layout = *c.layout;
     if (layout.tiles.empty()) return;
     std::vector<int> stack{0};
@@ -159,15 +172,36 @@ void selectPackage(const Config& c, const NodeClassifier& cls, const Frustum& fr
         ++r.nodesVisited;
         if (!frustum.intersectsSphere(tile.worldBox.center(), tile.worldBox.diagonal() * 0.5))
             continue;
-        if (tile.node != kNoId && !tile.children.empty() && cls.tooBig(tile.node)) {
-            stack.insert(stack.end(), tile.children.begin(), tile.children.end());
-            continue;
+        if (!tile.children.empty()) {
+            const double d = distanceToBox(tile.worldBox, cam.eye);
+            if (d <= 0.0 || tile.geometricError * cam.pixelsPerUnitAtDistanceOne() > maxError * d) {
+                stack.insert(stack.end(), tile.children.begin(), tile.children.end());
+                continue;
+            }
         }
         if (tile.content < 0) continue;
         const Config::ContentDraw& d = c.contentDraws[static_cast<std::size_t>(tile.content)];
+        tiles.push_back(static_cast<int>(&tile - layout.tiles.data()));
         draw.insert(draw.end(), d.drawables.begin(), d.drawables.end());
         r.triangles += d.triangles;
     }
+}
+
+// frames/NNNNN-camera.json: the frame's camera, for renderers to draw the same view
+// (tests/web/render-tileset.mjs --camera).
+void writeFrameCamera(const std::filesystem::path& dir, int frame, const Camera& cam) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "%05d-camera.json", frame);
+    const nlohmann::json j = {
+        {"eye", {cam.eye.x, cam.eye.y, cam.eye.z}},
+        {"target", {cam.target.x, cam.target.y, cam.target.z}},
+        {"up", {cam.up.x, cam.up.y, cam.up.z}},
+        {"fovDeg", glm::degrees(cam.fovY)},
+        {"near", cam.nearPlane},
+        {"far", cam.farPlane},
+        {"width", static_cast<int>(std::lround(cam.aspect * cam.viewportHeight))},
+        {"height", cam.viewportHeight}};
+    writeTextFileAtomic(dir / name, j.dump(1) + "\n");
 }
 
 } // namespace
@@ -203,6 +237,9 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     // A DLOD level is shown where its measured deviation covers at most the pixel error of the
     // reference viewport (as proxies are at their switch): dev * ppu / d <= height / 1080.
     const double dlodPixelError = o.height / referenceHeight;
+    // A package tile is refined past this screen-space error: the pixel error at the reference
+    // viewport, scaled to the render height like S (so tiles switch at the baked distances).
+    const double tileErrorPx = BakeParams{}.screen.pixelError * o.height / referenceHeight;
 
     // Configurations; Original first, always (it is the image reference).
     std::vector<Config> configs;
@@ -354,30 +391,48 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     std::vector<FrameRecord> records;
     records.reserve(static_cast<std::size_t>(o.frames) * configs.size());
     Progress progress = bar.progress();
-    RgbImage reference;
+    FrameMetrics metrics(configs.size(),
+                         flipPixelsPerDegree(o.height, glm::radians(path.fovYDegrees)));
+    // DLOD units: instance i at level l is unit i * dlodLevels + l, its parent the level below.
+    int dlodLevels = 1;
+    for (const std::vector<Mesh>& chain : chains)
+        dlodLevels = std::max(dlodLevels, static_cast<int>(chain.size()) + 1);
+    if (o.frameImages) fs::create_directories(o.out / "frames", ec);
     for (int f = 0; f < o.frames; ++f) {
         const Camera& cam = cameras[static_cast<std::size_t>(f)];
+        if (o.frameImages) writeFrameCamera(o.out / "frames", f, cam);
         const Frustum frustum = Frustum::fromCamera(cam);
         const double ppu = cam.pixelsPerUnitAtDistanceOne();
-        for (Config& c : configs) {
+        for (std::size_t ci = 0; ci < configs.size(); ++ci) {
+            Config& c = configs[ci];
             FrameRecord r;
             r.frame = f;
             r.timeSeconds = f / fps;
             r.config = c.name;
             std::vector<int> draw;
+            std::vector<int> units; // what was selected, for level switches (Popping.h)
+            std::function<int(int)> parent = [](int) { return -1; };
             const auto t0 = Clock::now();
             if (c.kind == Kind::Hlod && c.layout) {
-                selectPackage(c, NodeClassifier(*c.selection, cam, {selectionS}), frustum, draw, r);
+                selectPackage(c, cam, tileErrorPx, frustum, draw, units, r);
                 r.selectionUs = msSince(t0) * 1000.0;
+                parent = [&c](int t) {
+                    return c.layout->tiles[static_cast<std::size_t>(t)].parent;
+                };
             } else if (c.kind == Kind::Hlod) {
                 const SelectionResult sel = c.cache->select(cam, {selectionS});
                 r.selectionUs = msSince(t0) * 1000.0;
                 r.nodesVisited = sel.nodesVisited;
                 for (Id n : sel.drawList) {
+                    units.push_back(static_cast<int>(n));
                     if (c.nodeDrawable[n] < 0) continue;
                     draw.push_back(c.nodeDrawable[n]);
                     r.triangles += c.selection->triangles(n);
                 }
+                parent = [&c](int n) {
+                    const Id p = c.build->tree.nodes[static_cast<std::size_t>(n)].parent;
+                    return p == kNoId ? -1 : static_cast<int>(p);
+                };
             } else {
                 std::vector<std::pair<Id, int>> picks; // instance, level
                 for (Id i = 0; i < nInst; ++i) {
@@ -398,6 +453,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                 r.selectionUs = msSince(t0) * 1000.0;
                 r.nodesVisited = nInst;
                 for (const auto& [i, level] : picks) {
+                    units.push_back(static_cast<int>(i) * dlodLevels + level);
                     const Id m = scene.instances[i].mesh;
                     const Mesh& mesh = level == 0 ? scene.meshes[m]
                                                   : chains[m][static_cast<std::size_t>(level - 1)];
@@ -409,19 +465,20 @@ void runBench(const Scene& scene, const BenchOptions& o) {
             r.drawCalls = draw.size();
             renderer.setVisible(c.layer, draw);
             r.frameMs = renderer.render(c.layer, cam);
-            RgbImage image = renderer.readPixels();
-            if (c.kind == Kind::Original) {
-                reference = std::move(image);
-                r.psnrDb = kPsnrCapDb;
-                r.diffShare = 0.0;
-            } else {
-                const ImageError e = compareImages(reference, image);
-                r.psnrDb = e.psnrDb;
-                r.diffShare = e.diffShare;
+            const RgbImage image = renderer.readPixels();
+            if (c.kind == Kind::Original) metrics.setReference(image);
+            if (c.kind == Kind::Dlod)
+                parent = [dlodLevels](int u) { return u % dlodLevels > 0 ? u - 1 : -1; };
+            std::sort(units.begin(), units.end());
+            metrics.measure(ci, image, std::move(units), parent, r);
+            if (o.frameImages) {
+                char name[64];
+                std::snprintf(name, sizeof(name), "%05d-%s.png", f, c.key.c_str());
+                writePng(o.out / "frames" / name, image);
             }
             for (std::size_t m = 0; m < momentFrames.size(); ++m) {
                 if (momentFrames[m] != f) continue;
-                momentImages[m].push_back(c.kind == Kind::Original ? reference : image);
+                momentImages[m].push_back(image);
                 char cap[256];
                 if (c.kind == Kind::Original)
                     std::snprintf(cap, sizeof(cap), "%s\n%llu draws, %s tris, %.1f ms",
@@ -478,6 +535,12 @@ void runBench(const Scene& scene, const BenchOptions& o) {
          [](const FrameRecord& r) { return static_cast<double>(r.triangles); });
     plot("plot_psnr.png", "Image error vs Original (PSNR, capped at 100)", "PSNR (dB)",
          [](const FrameRecord& r) { return r.psnrDb; });
+    plot("plot_flip.png", "Perceptual error vs Original (mean FLIP)", "FLIP",
+         [](const FrameRecord& r) { return r.flip; });
+    plot("plot_pop.png", "Popping at level switches (FLIP beyond the Original's change)", "Pop",
+         [](const FrameRecord& r) {
+             return r.lodSwitch ? r.pop : std::numeric_limits<double>::quiet_NaN();
+         });
     for (std::size_t m = 0; m < momentFrames.size(); ++m) {
         char name[64];
         std::snprintf(name, sizeof(name), "side_by_side_%04.1fs.png", momentFrames[m] / fps);
@@ -497,6 +560,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     extra["proxy_textures"] = o.proxyTextures;
     extra["hlod_draw"] = o.draw == HlodDraw::Package ? "package" : "nodes";
     extra["psnr_cap_db"] = kPsnrCapDb;
+    extra["flip_pixels_per_degree"] = metrics.pixelsPerDegree();
     extra["camera_path"] = o.pathFile ? o.pathFile->string() : std::string("automatic");
     extra["statistics"] = nlohmann::json::array();
     for (const GeometryStats& s : stats)
@@ -508,12 +572,13 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     writeTextFileAtomic(o.out / "summary.json", summaryJson(summaries, extra).dump(2) + "\n");
 
     for (const ConfigSummary& s : summaries)
-        std::printf("%-18s draws %8.1f (max %6llu)  tris %9s  frame %7.2f ms (p95 %7.2f)  "
-                    "PSNR %5.1f dB (min %5.1f)  select %7.1f us\n",
-                    s.config.c_str(), s.drawCallsMean,
-                    static_cast<unsigned long long>(s.drawCallsMax),
-                    formatCount(s.trianglesMean).c_str(), s.frameMsMean, s.frameMsP95, s.psnrMean,
-                    s.psnrMin, s.selectionUsMean);
+        std::printf(
+            "%-18s draws %8.1f (max %6llu)  tris %9s  frame %7.2f ms (p95 %7.2f)  "
+            "PSNR %5.1f dB (min %5.1f)  FLIP %.4f (max %.4f)  pop %.4f (max %.4f, %d "
+            "switches)  select %7.1f us\n",
+            s.config.c_str(), s.drawCallsMean, static_cast<unsigned long long>(s.drawCallsMax),
+            formatCount(s.trianglesMean).c_str(), s.frameMsMean, s.frameMsP95, s.psnrMean,
+            s.psnrMin, s.flipMean, s.flipMax, s.popMean, s.popMax, s.switches, s.selectionUsMean);
     std::printf("output: %s\n", o.out.string().c_str());
 }
 

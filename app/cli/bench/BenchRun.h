@@ -12,7 +12,8 @@
 //   thesis' projected-size thresholds showed count-driven reductions that had torn a mesh.)
 // - HLOD, drawn as its package (--draw package, the default): the tiles `hlod build` exports
 //   (PackageLayout.h), selected as a 3D Tiles runtime selects them (REPLACE refinement, a tile
-//   culled by its box, a node's tile refined where Algorithm 5 refines the node). A proxy
+//   culled by its box, refined when its screen-space error at the distance to its box exceeds
+//   the pixel error scaled to the render height, as 3d-tiles-renderer and CesiumJS do). A proxy
 //   tile is one draw; a leaf-group tile draws its instanced leaves one by one and its other
 //   leaves merged into one mesh per look, as the GLB stores them. Draw calls, triangles and
 //   image are what a runtime gets from the package (a group is drawn whole, also its leaves
@@ -28,6 +29,9 @@
 // drawables visible so every buffer is on the GPU. Frames are rendered frame-major (all
 // configurations of frame 0, then of frame 1, ...), so slow drift of the machine hits every
 // configuration alike.
+// Image error per frame against the Original frame: PSNR, differing pixels, mean FLIP at the
+// camera's own pixels per degree (Flip.h), and popping where the selection switches a level of
+// detail (Popping.h; FrameMetrics.h).
 #pragma once
 
 #include <filesystem>
@@ -60,6 +64,9 @@ struct BenchOptions {
     std::filesystem::path cacheDir; // proxy cache, empty = none
     bool proxyTextures = true;      // bake base-colour atlases (drawn in Textured shading)
     HlodDraw draw = HlodDraw::Package;
+    // Also write frames/NNNNN-KEY.png for every frame and configuration, and each frame's
+    // camera as frames/NNNNN-camera.json ({eye, target, up, fovDeg, near, far, width, height}).
+    bool frameImages = false;
 };
 
 inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",

@@ -15,8 +15,10 @@ std::vector<FrameRecord> sampleRecords() {
     std::vector<FrameRecord> r;
     for (int f = 0; f < 20; ++f) {
         r.push_back({f, f * 0.1, "Original", 100, 1000, 50, 10.0 + f, 5.0, 100.0, 0.0});
+        // FLIP 0.001 f; a level switch at frames 5, 10 and 15 with a pop of 0.01 f.
+        const bool sw = f > 0 && f % 5 == 0;
         r.push_back({f, f * 0.1, "HLOD, AABB k=1", static_cast<std::uint64_t>(10 + f), 300, 30, 2.0,
-                     7.0, 40.0 - f * 0.1, 0.01});
+                     7.0, 40.0 - f * 0.1, 0.01, 0.001 * f, sw, sw ? 0.01 * f : 0.0});
     }
     return r;
 }
@@ -46,6 +48,13 @@ TEST(BenchReport, SummaryPerConfigInOrder) {
     EXPECT_EQ(s[1].drawCallsMax, 29u);
     EXPECT_NEAR(s[1].psnrMin, 38.1, 1e-9);
     EXPECT_DOUBLE_EQ(s[1].selectionUsMean, 7.0);
+    EXPECT_NEAR(s[1].flipMean, 0.0095, 1e-12); // 0.001 x mean of 0..19
+    EXPECT_DOUBLE_EQ(s[1].flipMax, 0.019);
+    EXPECT_EQ(s[1].switches, 3);
+    EXPECT_NEAR(s[1].popMean, 0.10, 1e-12); // (0.05 + 0.10 + 0.15) / 3 switch frames
+    EXPECT_DOUBLE_EQ(s[1].popMax, 0.15);
+    EXPECT_EQ(s[0].switches, 0);
+    EXPECT_EQ(s[0].popMean, 0.0);
 }
 
 TEST(BenchReport, CsvHasHeaderAndOneRowPerRecord) {
@@ -58,7 +67,8 @@ TEST(BenchReport, CsvHasHeaderAndOneRowPerRecord) {
     while (std::getline(in, line))
         ++rows;
     EXPECT_EQ(rows, 40);
-    EXPECT_NE(csv.find("0,0.0000,\"HLOD, AABB k=1\",10,300,30,2.0000,40.000,0.010000"),
+    EXPECT_NE(csv.find("0,0.0000,\"HLOD, AABB k=1\",10,300,30,2.0000,40.000,0.010000,0.000000,0,"
+                       "0.000000"),
               std::string::npos)
         << csv.substr(0, 300);
 }
@@ -72,11 +82,15 @@ TEST(BenchReport, JsonAndMarkdown) {
     EXPECT_DOUBLE_EQ(j["configs"][1]["draw_calls"]["mean"].get<double>(), 19.5);
     EXPECT_TRUE(j["configs"][0]["frame_ms"].contains("p95"));
     EXPECT_TRUE(j["configs"][0]["selection_us"].contains("mean"));
+    EXPECT_EQ(j["configs"][1]["pop"]["switches"], 3);
+    EXPECT_DOUBLE_EQ(j["configs"][1]["pop"]["max"].get<double>(), 0.15);
+    EXPECT_DOUBLE_EQ(j["configs"][1]["flip"]["max"].get<double>(), 0.019);
 
     GeometryStats g{"Original", 1250000, 847000, 1317, 65000000};
     const std::string md = tablesMarkdown("scene", {g}, s);
     EXPECT_NE(md.find("| Original | 1.25M | 847K | 1317 | 65.00 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| HLOD, AABB k=1 | 19.5 | 29 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 0.0095 | 0.0190 | 3 | 0.1000 | 0.1500 |"), std::string::npos) << md;
 
     hlod::test::TempDir dir;
     writeTextFileAtomic(dir / "a.txt", "hello");

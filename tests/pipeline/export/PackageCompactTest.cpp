@@ -156,12 +156,13 @@ TEST(PackageCompact, ARebuildWritesOnlyTheFilesThatChanged) {
     const PackageSummary same = writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
     EXPECT_EQ(same.written, 0u);
     EXPECT_EQ(same.reused, first.files);
-    // Placed on the globe: only the root transform in tileset.json changes.
+    // Placed on the globe: only tileset.json (root transform, extras.hlod) and hlod.json
+    // (placement.geo) change.
     PackageOptions geo;
     geo.geo = parseGeoLocation("57.7,11.97,10");
     const PackageSummary moved = writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, geo);
-    EXPECT_EQ(moved.written, 1u);
-    EXPECT_EQ(moved.reused, first.files - 1);
+    EXPECT_EQ(moved.written, 2u);
+    EXPECT_EQ(moved.reused, first.files - 2);
     // Another screen size: new proxies, but the leaves' files stay as they were.
     const Build other(plant(), 150.0);
     const PackageSummary rebaked =

@@ -169,6 +169,59 @@ TEST(Package, GeoPlacementPutsTheRootOnTheEllipsoid) {
     EXPECT_THROW(parseGeoLocation("1,2"), Error);
 }
 
+TEST(Package, LocalPackageCarriesWhereItIsAndAViewThatFramesIt) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
+    const nlohmann::json h = readJson(tmp / "pkg" / "tileset.json")["extras"]["hlod"];
+    // Sample yard: x in [-60, 60], y (up) in [-0.5, 12], z in [-40, 40]: centre (0, 5.75, 0),
+    // radius half the diagonal sqrt(120^2 + 12.5^2 + 80^2) / 2 = 72.38; Z up: (x, -z, y).
+    EXPECT_EQ(h["frame"], "local");
+    EXPECT_EQ(h["units"], "metre");
+    EXPECT_EQ(h["maximumScreenSpaceError"], 1.0);
+    const glm::dvec3 c(h["boundingSphere"]["center"][0], h["boundingSphere"]["center"][1],
+                       h["boundingSphere"]["center"][2]);
+    EXPECT_NEAR(glm::distance(c, glm::dvec3(0.0, 0.0, 5.75)), 0.0, 1e-4);
+    const double r = h["boundingSphere"]["radius"];
+    EXPECT_NEAR(r, 72.38, 0.01);
+    EXPECT_EQ(h["sceneUp"], nlohmann::json({0.0, 0.0, 1.0})); // glTF-like source: +Y, Z up here
+    // The view: the automatic path's first camera, looking at the centre from r / sin(30°) =
+    // 2r away (the sphere fills a 60° view), 35° above the horizon.
+    auto v3 = [](const nlohmann::json& a) { return glm::dvec3(a[0], a[1], a[2]); };
+    const glm::dvec3 eye = v3(h["view"]["eye"]), target = v3(h["view"]["target"]);
+    EXPECT_NEAR(glm::distance(target, c), 0.0, 1e-3);
+    EXPECT_NEAR(glm::distance(eye, target), 2.0 * r, 0.01 * r);
+    EXPECT_NEAR((eye - target).z / glm::distance(eye, target), std::sin(glm::radians(35.0)), 0.01);
+    EXPECT_EQ(h["view"]["fovYDegrees"], 60.0);
+    EXPECT_FALSE(h.contains("localToWorld"));
+    // hlod.json says the same in the package frame (Y up).
+    const nlohmann::json m = readJson(tmp / "pkg" / "hlod.json")["placement"];
+    EXPECT_EQ(m["frame"], "package");
+    EXPECT_TRUE(m["geo"].is_null());
+    EXPECT_NEAR(glm::distance(v3(m["boundingSphere"]["center"]), glm::dvec3(0.0, 5.75, 0.0)), 0.0,
+                1e-4);
+    EXPECT_EQ(m["sceneUp"], nlohmann::json({0.0, 1.0, 0.0}));
+}
+
+TEST(Package, GeoPackageSaysItsFrameIsEastNorthUp) {
+    hlod::test::TempDir tmp;
+    const Built& b = built();
+    PackageOptions o;
+    o.geo = parseGeoLocation("57.7,11.97,10");
+    writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, o);
+    const nlohmann::json ts = readJson(tmp / "pkg" / "tileset.json");
+    const nlohmann::json h = ts["extras"]["hlod"];
+    EXPECT_EQ(h["frame"], "east-north-up");
+    EXPECT_EQ(h["geo"]["latitudeDeg"], 57.7);
+    ASSERT_EQ(h["localToWorld"].size(), 16u);
+    // The root transform is localToWorld times the root tile's own frame (a translation here):
+    // the same rotation columns.
+    for (int i = 0; i < 12; ++i)
+        EXPECT_NEAR(h["localToWorld"][i].get<double>(), ts["root"]["transform"][i].get<double>(),
+                    1e-12)
+            << i;
+}
+
 TEST(Package, UnsafeContentPathIsRefusedOnRead) {
     hlod::test::TempDir tmp;
     const Built& b = built();

@@ -129,6 +129,47 @@ TEST(GlbMeshopt, CompressedSceneReadsBackWithinItsQuantisation) {
     }
 }
 
+// Buffer 0 must be used by some core buffer view, or validators that do not know
+// EXT_meshopt_compression report it "may be unused" (GlbWriter.h): without an embedded image,
+// the stream smallest once decoded is stored plain there.
+TEST(GlbMeshopt, BufferZeroHoldsTheSmallestStreamPlainWhenNothingElseIsThere) {
+    const Quad q;
+    // The quad: indices 6 x 2 = 12 bytes, the smallest (normals, colours 16, positions, uvs 32).
+    const nlohmann::json quad = nlohmann::json::parse(
+        splitGlb(encodeGlb(twoQuads(q, GlbCompression::Meshopt)), "q.glb").json);
+    const int indexView =
+        quad["accessors"][quad["meshes"][0]["primitives"][0]["indices"].get<int>()]["bufferView"];
+    int plainViews = 0;
+    for (std::size_t v = 0; v < quad["bufferViews"].size(); ++v) {
+        const nlohmann::json& view = quad["bufferViews"][v];
+        const bool plain = !view.contains("extensions");
+        plainViews += plain;
+        EXPECT_EQ(view["buffer"], plain ? 0 : 1);
+        EXPECT_EQ(plain, static_cast<int>(v) == indexView) << v;
+    }
+    EXPECT_EQ(plainViews, 1);
+
+    // Three copies of its triangles (36 bytes): now the normals (16 bytes, before the colours)
+    // are stored plain, as the octahedral filter decodes them; they read back as compressed ones
+    // do.
+    Quad tripled;
+    for (int k = 0; k < 2; ++k)
+        tripled.indices.insert(tripled.indices.end(), q.indices.begin(), q.indices.end());
+    const std::vector<std::uint8_t> bytes = encodeGlb(twoQuads(tripled, GlbCompression::Meshopt));
+    const nlohmann::json j = nlohmann::json::parse(splitGlb(bytes, "q.glb").json);
+    const int normalView =
+        j["accessors"][j["meshes"][0]["primitives"][0]["attributes"]["NORMAL"].get<int>()]
+         ["bufferView"];
+    EXPECT_FALSE(j["bufferViews"][normalView].contains("extensions"));
+    EXPECT_EQ(j["bufferViews"][normalView]["byteLength"], 16);
+    test::TempDir dir;
+    const Scene packed = roundTrip(bytes, dir);
+    ASSERT_EQ(packed.meshes.size(), 1u);
+    for (std::size_t v = 0; v < 4; ++v)
+        EXPECT_GT(glm::dot(glm::normalize(packed.meshes[0].normals[v]), q.normals[v]), 0.9997f);
+    EXPECT_EQ(packed.meshes[0].indices.size(), 18u);
+}
+
 TEST(GlbMeshopt, CorruptCompressedDataIsAnErrorNamingTheFile) {
     const Quad q;
     std::vector<std::uint8_t> bytes = encodeGlb(twoQuads(q, GlbCompression::Meshopt));
@@ -226,7 +267,8 @@ TEST(GlbMeshopt, MeshesSharingCompressedStreamsReadBackWithinTheirQuantisation) 
     }
     const std::vector<std::uint8_t> bytes = encodeGlb(s);
     const nlohmann::json j = nlohmann::json::parse(splitGlb(bytes, "q.glb").json);
-    EXPECT_EQ(j["bufferViews"].size(), 5u); // positions, normals, uvs, colours, indices
+    // Positions, normals, uvs, colours, indices, and the plain copy of the smallest accessor.
+    EXPECT_EQ(j["bufferViews"].size(), 6u);
     test::TempDir dir;
     const Scene packed = roundTrip(bytes, dir);
     ASSERT_EQ(packed.instances.size(), 4u);

@@ -58,6 +58,82 @@ TEST(TextureImage, PngPassesThroughByteForByte) {
     EXPECT_EQ(image->bytes, png); // no recompression
 }
 
+namespace {
+
+// A PNG chunk with its CRC-32 (ISO 3309, the PNG spec's CRC over type and data).
+std::vector<std::uint8_t> chunk(const char* type, const std::vector<std::uint8_t>& data) {
+    std::vector<std::uint8_t> c{std::uint8_t(data.size() >> 24), std::uint8_t(data.size() >> 16),
+                                std::uint8_t(data.size() >> 8), std::uint8_t(data.size())};
+    c.insert(c.end(), type, type + 4);
+    c.insert(c.end(), data.begin(), data.end());
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (std::size_t i = 4; i < c.size(); ++i) {
+        crc ^= c[i];
+        for (int k = 0; k < 8; ++k)
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    crc ^= 0xFFFFFFFFu;
+    for (int k = 3; k >= 0; --k)
+        c.push_back(std::uint8_t(crc >> (8 * k)));
+    return c;
+}
+
+// The 2 x 2 PNG with colour-space metadata after IHDR (signature 8 bytes + IHDR 25 bytes): a
+// gamma of 1.0 (100000), an ICC profile stub, unequal pixel aspect, a text chunk, and tRNS
+// making pure red transparent.
+std::vector<std::uint8_t> pngWithMetadata() {
+    const std::vector<std::uint8_t> plain = encodePng();
+    std::vector<std::uint8_t> png(plain.begin(), plain.begin() + 33);
+    for (const auto& c : {chunk("gAMA", {0, 1, 0x86, 0xA0}),
+                          chunk("iCCP", {'p', 0, 0, 0x78, 0x9C, 3, 0, 0, 0, 0, 1}),
+                          chunk("pHYs", {0, 0, 0x0B, 0x13, 0, 0, 0x16, 0x26, 1}),
+                          chunk("tEXt", {'a', 0, 'b'}), chunk("tRNS", {0, 255, 0, 0, 0, 0})})
+        png.insert(png.end(), c.begin(), c.end());
+    png.insert(png.end(), plain.begin() + 33, plain.end());
+    return png;
+}
+
+std::vector<std::string> chunkTypes(const std::vector<std::uint8_t>& png) {
+    std::vector<std::string> types;
+    for (std::size_t p = 8; p + 12 <= png.size();) {
+        const std::size_t n = (std::size_t(png[p]) << 24) | (std::size_t(png[p + 1]) << 16) |
+                              (std::size_t(png[p + 2]) << 8) | png[p + 3];
+        types.emplace_back(reinterpret_cast<const char*>(&png[p + 4]), 4);
+        p += 12 + n;
+    }
+    return types;
+}
+
+} // namespace
+
+TEST(TextureImage, PngLosesItsColourSpaceMetadataButNotItsPixels) {
+    const std::vector<std::uint8_t> png = pngWithMetadata();
+    ASSERT_EQ(chunkTypes(png), (std::vector<std::string>{"IHDR", "gAMA", "iCCP", "pHYs", "tEXt",
+                                                         "tRNS", "IDAT", "IEND"}));
+    const auto image = encodeForGltf(png);
+    ASSERT_TRUE(image);
+    // Critical chunks and tRNS (it changes what the pixels are) are kept, in order.
+    EXPECT_EQ(chunkTypes(image->bytes), (std::vector<std::string>{"IHDR", "tRNS", "IDAT", "IEND"}));
+    // Decoded: the same samples, and red (255, 0, 0) transparent through tRNS in both.
+    int w = 0, h = 0, c = 0;
+    unsigned char* before =
+        stbi_load_from_memory(png.data(), static_cast<int>(png.size()), &w, &h, &c, 4);
+    unsigned char* after = stbi_load_from_memory(
+        image->bytes.data(), static_cast<int>(image->bytes.size()), &w, &h, &c, 4);
+    ASSERT_NE(before, nullptr);
+    ASSERT_NE(after, nullptr);
+    EXPECT_EQ(std::memcmp(before, after, 16), 0);
+    EXPECT_EQ(after[3], 0);   // red: transparent
+    EXPECT_EQ(after[7], 255); // green: opaque
+    stbi_image_free(before);
+    stbi_image_free(after);
+    // A chunk length past the end of the file is a broken structure.
+    std::vector<std::uint8_t> broken = png;
+    broken[33 + 3] = 200; // gAMA claims 200 bytes
+    broken.resize(80);
+    EXPECT_FALSE(pngWithoutMetadata(broken));
+}
+
 TEST(TextureImage, BmpIsReencodedAsPngWithTheSamePixels) {
     const auto image = encodeForGltf(encodeBmp());
     ASSERT_TRUE(image);
