@@ -39,6 +39,12 @@ struct ProxyMesh {
     // and the vertex-colour fallback, but are not drawn with it).
     std::vector<glm::vec2> uvs;
     std::shared_ptr<const ProxyAtlas> atlas;
+    // How it is drawn besides its base colour (ProxyLook.h, set by the baker from the originals
+    // it stands for, not stored in the proxy cache): from both sides, and the linear emissive
+    // factor (with an atlas: times the atlas, which is the emissive texture too; without: the
+    // emitted colour itself).
+    bool doubleSided = false;
+    glm::vec3 emissive{0.0f};
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     std::size_t vertexCount() const { return positions.size(); }
