@@ -11,6 +11,7 @@
 #include <QWheelEvent>
 #include <glm/glm.hpp>
 #include <vtkCamera.h>
+#include <vtkRenderer.h>
 
 #include "TestScenes.h"
 #include "pipeline/io/Import.h"
