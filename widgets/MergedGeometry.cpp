@@ -67,7 +67,9 @@ VertexRange MergedGeometry::addInstance(const Scene& scene, Id instance, Id id,
     const glm::dmat4& world = scene.instanceTransform(instance);
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
     const Id material = mesh.material < scene.materials.size() ? mesh.material : 0;
-    const glm::vec3 materialColor = displayColor(scene.materials[material].effectiveColor());
+    const Material& m = scene.materials[material];
+    const glm::vec4 emitted(m.effectiveEmissive(), 0.0f);
+    const glm::vec3 materialColor = displayColor(m.effectiveColor() + emitted);
     const std::size_t base = vertexCount();
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const glm::dvec3 p = glm::dvec3(world * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0));
@@ -75,7 +77,7 @@ VertexRange MergedGeometry::addInstance(const Scene& scene, Id instance, Id id,
             i < mesh.normals.size() ? glm::dvec3(mesh.normals[i]) : glm::dvec3(0, 0, 1);
         const glm::dvec3 n = unitOr(normalMatrix * local, {0, 0, 1});
         const glm::vec3 c = color                    ? *color
-                            : i < mesh.colors.size() ? displayColor(mesh.colors[i])
+                            : i < mesh.colors.size() ? displayColor(mesh.colors[i] + emitted)
                                                      : materialColor;
         for (int k = 0; k < 3; ++k) {
             positions_.push_back(static_cast<float>(p[k]));
@@ -87,6 +89,17 @@ VertexRange MergedGeometry::addInstance(const Scene& scene, Id instance, Id id,
     return {base, vertexCount() - base};
 }
 
+namespace {
+
+// A proxy's vertex colour with its emission added (ProxyMesh.h: relative to the colour when
+// it has an atlas, whose texels the colours approximate; the emitted colour itself without).
+glm::vec4 withEmission(const ProxyMesh& proxy, const glm::vec4& c) {
+    const glm::vec3 e = proxy.hasAtlas() ? proxy.emissive * glm::vec3(c) : proxy.emissive;
+    return c + glm::vec4(e, 0.0f);
+}
+
+} // namespace
+
 VertexRange MergedGeometry::addProxy(const ProxyMesh& proxy, Id id,
                                      std::optional<glm::vec3> color) {
     const std::size_t base = vertexCount();
@@ -95,10 +108,11 @@ VertexRange MergedGeometry::addProxy(const ProxyMesh& proxy, Id id,
         const glm::dvec3 n = i < proxy.normals.size()
                                  ? unitOr(glm::dvec3(proxy.normals[i]), {0, 0, 1})
                                  : glm::dvec3(0, 0, 1);
-        const glm::vec3 c = color ? *color
-                            : i < proxy.colors.size()
-                                ? displayColor(glm::vec4(proxy.colors[i]) / 255.0f)
-                                : glm::vec3(0.8f);
+        const glm::vec3 c =
+            color ? *color
+            : i < proxy.colors.size()
+                ? displayColor(withEmission(proxy, glm::vec4(proxy.colors[i]) / 255.0f))
+                : glm::vec3(0.8f);
         for (int k = 0; k < 3; ++k) {
             positions_.push_back(static_cast<float>(p[k]));
             normals_.push_back(static_cast<float>(n[k]));

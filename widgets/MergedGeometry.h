@@ -6,7 +6,10 @@
 // world in double and stored as float; normals go through the inverse transpose.
 // Colours: RGB per vertex, display (sRGB) values. A mesh gives its vertex colours or its
 // material's effective colour, a proxy its baked colours (both linear, converted here), unless
-// the caller passes a colour that replaces them (cluster and depth tints).
+// the caller passes a colour that replaces them (cluster and depth tints). Emission cannot be
+// added after lighting per vertex in one actor: it is added to the colour instead (what a
+// surface facing the light shows), so emissive materials are not drawn dark. Both sides are
+// drawn (one actor for all).
 // Ids: every triangle carries the id it was added with in the cell array named at construction
 // ("InstanceId", "NodeId"), so a picked cell maps back to the scene or the cluster tree.
 // Each add returns the vertex range it wrote, so colours can be rewritten later in place.

@@ -176,8 +176,11 @@ glm::vec4 partColor(const Material& material, bool textured) {
 void applyLook(vtkActor& actor, const ScenePart& part) {
     vtkProperty* property = actor.GetProperty();
     property->SetColor(part.color.r, part.color.g, part.color.b);
-    // Fully transparent materials would vanish; keep them faintly visible.
-    property->SetOpacity(part.color.a < kOpaqueAlpha ? std::max(0.05, double(part.color.a)) : 1.0);
+    // Fully transparent materials would vanish; keep them faintly visible. Opacity only where
+    // the material blends (an OPAQUE material's alpha is ignored, as engines ignore it).
+    const bool blends = part.look.alphaMode == AlphaMode::Blend;
+    property->SetOpacity(
+        blends && part.color.a < kOpaqueAlpha ? std::max(0.05, double(part.color.a)) : 1.0);
     property->SetInterpolationToPhong();
     property->SetAmbient(0.1);
     property->SetDiffuse(0.8);
@@ -252,8 +255,7 @@ void SceneActors::buildPerInstance(const Scene& scene) {
         part.color = partColor(material, texture != nullptr);
         part.vertexColors = !mesh.colors.empty();
         part.texture = texture;
-        part.alphaMode = material.alphaMode;
-        part.alphaCutoff = material.alphaCutoff;
+        part.look = materialLookOf(scene, part.material, texture != nullptr);
         parts_.push_back(std::move(part));
     }
 }
@@ -325,11 +327,8 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
                 builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
                                part.color, i, textured ? m.baseColor : glm::vec4(1.0f));
             part.polyData = builder.finish();
-            if (textured) {
-                part.texture = textures[group.instances.front()];
-                part.alphaMode = m.alphaMode;
-                part.alphaCutoff = m.alphaCutoff;
-            }
+            if (textured) part.texture = textures[group.instances.front()];
+            part.look = materialLookOf(scene, material, textured);
             parts_.push_back(std::move(part));
         }
         return;
@@ -337,36 +336,42 @@ void SceneActors::buildMerged(const Scene& scene, std::size_t maxParts) {
     buildByOpacity(scene, colors, textures);
 }
 
-// Too many materials for one actor each (TORCS has one per object): everything untextured and
-// opaque in one polydata, untextured translucent in another, textured meshes in one per
-// texture and alpha mode, with each material's colour (and opacity) stored per vertex.
+// Too many materials for one actor each (TORCS has one per object): one polydata per look,
+// with each material's colour (and opacity) stored per vertex. A look is the texture, alpha
+// mode and cut-off, sidedness and emission; untextured materials are opaque or translucent by
+// their colour's alpha.
 void SceneActors::buildByOpacity(const Scene& scene, const std::vector<glm::vec4>& colors,
                                  const std::vector<std::shared_ptr<const RgbaImage>>& textures) {
     layout_ = Layout::ByOpacity;
-    MergeGroup opaque, translucent;
-    std::map<std::tuple<const RgbaImage*, AlphaMode, float>, MergeGroup> textured;
+    using Key = std::tuple<const RgbaImage*, int, float, bool, float, float, float, bool>;
+    std::map<Key, MergeGroup> groups;
+    std::map<Key, VtkMaterialLook> looks;
     for (Id i = 0; i < scene.instances.size(); ++i) {
-        const Material& m = scene.materials[materialOf(scene, i)];
-        if (textures[i])
-            textured[{textures[i].get(), m.alphaMode, m.alphaCutoff}].add(scene, i);
-        else
-            (colors[materialOf(scene, i)].a < kOpaqueAlpha ? translucent : opaque).add(scene, i);
+        const Id material = materialOf(scene, i);
+        VtkMaterialLook look = materialLookOf(scene, material, textures[i] != nullptr);
+        if (!textures[i]) {
+            look.alphaMode =
+                colors[material].a < kOpaqueAlpha ? AlphaMode::Blend : AlphaMode::Opaque;
+            look.alphaCutoff = 0.5f;
+        }
+        const Key key{textures[i].get(), static_cast<int>(look.alphaMode),
+                      look.alphaCutoff,  look.doubleSided,
+                      look.emissive.r,   look.emissive.g,
+                      look.emissive.b,   look.emissiveTimesTexture};
+        groups[key].add(scene, i);
+        looks[key] = look;
     }
-    std::vector<MergeGroup*> groups{&opaque, &translucent};
-    for (auto& [key, group] : textured)
-        groups.push_back(&group);
-    for (MergeGroup* group : groups) {
-        if (group->triangles == 0) continue;
-        const bool isTextured = group != &opaque && group != &translucent;
-        const Material& first = scene.materials[materialOf(scene, group->instances.front())];
+    for (auto& [key, group] : groups) {
+        if (group.triangles == 0) continue;
+        const bool isTextured = std::get<0>(key) != nullptr;
+        const VtkMaterialLook& look = looks[key];
         PolyBuilder builder;
         builder.withColors = true;
-        builder.colorComponents =
-            group == &translucent || (isTextured && first.alphaMode == AlphaMode::Blend) ? 4 : 3;
+        builder.colorComponents = look.alphaMode == AlphaMode::Blend ? 4 : 3;
         builder.withUvs = isTextured;
         builder.withInstanceIds = true;
-        builder.reserve(group->vertices, group->triangles);
-        for (Id i : group->instances) {
+        builder.reserve(group.vertices, group.triangles);
+        for (Id i : group.instances) {
             const Material& m = scene.materials[materialOf(scene, i)];
             builder.append(scene.meshes[scene.instances[i].mesh], scene.instanceTransform(i),
                            isTextured ? partColor(m, true) : colors[materialOf(scene, i)], i,
@@ -377,11 +382,8 @@ void SceneActors::buildByOpacity(const Scene& scene, const std::vector<glm::vec4
         part.material = kNoId;
         part.color = glm::vec4(1.0f);
         part.vertexColors = true;
-        if (isTextured) {
-            part.texture = textures[group->instances.front()];
-            part.alphaMode = first.alphaMode;
-            part.alphaCutoff = first.alphaCutoff;
-        }
+        if (isTextured) part.texture = textures[group.instances.front()];
+        part.look = look;
         parts_.push_back(std::move(part));
     }
 }
@@ -402,8 +404,8 @@ const std::vector<vtkSmartPointer<vtkActor>>& SceneActors::actors() {
             auto& texture = textures_[part.texture.get()];
             if (!texture) texture = makeVtkTexture(*part.texture);
             actor->SetTexture(texture);
-            applyAlphaMode(*actor, part.alphaMode, part.alphaCutoff);
         }
+        applyMaterialLook(*actor, part.look);
         actors_.push_back(actor);
     }
     return actors_;

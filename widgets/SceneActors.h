@@ -16,7 +16,9 @@
 // white for no texture), converted from linear to sRGB since VTK does no colour management;
 // vertex colours, when a mesh has them, replace it. Textured (the material's texture decoded
 // and the mesh has uvs): base colour factor x vertex colour x texture, the alpha cut-out
-// (MASK) honoured, as `hlod bench --shading textured` draws it (VtkSurfaceLook.h).
+// (MASK) honoured, as `hlod bench --shading textured` draws it (VtkSurfaceLook.h). Both:
+// back faces culled unless the material is double-sided, emission added. Merged parts share
+// one look: materials are merged only with materials that draw alike.
 // Threading: build() creates only data objects and may run on a worker thread; actors()
 // creates the vtkActors and must run on the GUI thread.
 #pragma once
@@ -34,6 +36,7 @@
 #include <vtkTexture.h>
 
 #include "pipeline/scene/Scene.h"
+#include "widgets/VtkSurfaceLook.h"
 
 namespace hlod::widgets {
 
@@ -53,8 +56,7 @@ struct ScenePart {
     glm::vec4 color{1.0f}; // display colour, sRGB, alpha = opacity
     bool vertexColors = false;
     std::shared_ptr<const RgbaImage> texture; // base colour texture (the polydata has uvs)
-    AlphaMode alphaMode = AlphaMode::Opaque;
-    float alphaCutoff = 0.5f;
+    VtkMaterialLook look;                     // alpha, sides, emission
 };
 
 class SceneActors {
@@ -71,8 +73,8 @@ public:
     enum class Layout {
         PerInstance, // one actor per instance
         PerMaterial, // merged, one part per material
-        ByOpacity,   // merged, one opaque and one translucent part (and one per texture),
-                     // colours per vertex
+        ByOpacity,   // merged, one part per look (texture, alpha, sides, emission; untextured
+                     // materials opaque or translucent), colours per vertex
     };
 
     const std::vector<ScenePart>& parts() const { return parts_; }

@@ -121,7 +121,7 @@ vtkActor* TexturedPreview::actorFor(const Scene& scene, const HlodBuild& build, 
         const glm::vec4 c = linearToDisplay(m.baseColor);
         actor->GetProperty()->SetColor(c.r, c.g, c.b);
         actor->SetTexture(textureFor(*scene.textureImage(mesh.material)));
-        applyAlphaMode(*actor, m.alphaMode, m.alphaCutoff);
+        applyMaterialLook(*actor, materialLookOf(scene, mesh.material, true));
     } else {
         const ProxyMesh& proxy = build.bake.nodes[n].proxy;
         mapper->SetInputData(
@@ -130,7 +130,12 @@ vtkActor* TexturedPreview::actorFor(const Scene& scene, const HlodBuild& build, 
         actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
         actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
         actor->SetTexture(textureFor(*proxy.atlas->image));
-        applyAlphaMode(*actor, proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque, 0.5f);
+        VtkMaterialLook look;
+        look.alphaMode = proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque;
+        look.doubleSided = proxy.doubleSided;
+        look.emissive = proxy.emissive; // relative to the atlas (ProxyLook.h)
+        look.emissiveTimesTexture = true;
+        applyMaterialLook(*actor, look);
     }
     actor->SetMapper(mapper);
     vtkProperty* p = actor->GetProperty();

@@ -10,10 +10,24 @@
 // Alpha: OPAQUE and MASK surfaces are drawn in the opaque pass (VTK would otherwise treat an
 // actor whose texture has alpha as translucent and blend it); MASK discards fragments whose
 // alpha is below the cut-off; both then write alpha 1. BLEND is left to VTK's translucent pass.
+// Sides: back faces are culled unless the material is double-sided (glTF 2.0 3.9.5, what every
+// engine does); VTK's two-sided lighting then lights a double-sided back face as glTF does,
+// with the normal flipped.
+// Emission (glTF: emissive factor x emissive texture, added after lighting): a uniform
+// `hlodEmissive` (linear RGB) added to the lit colour in linear terms (colours reach VTK as
+// sRGB values: decoded with gamma 2.2, the emission added, encoded again). When the emissive
+// texture is the base colour texture (AC3D's `emis`, a proxy atlas) it is added before VTK
+// multiplies by the texture, (lit + emissive) x texture, exactly glTF's sum for that case;
+// otherwise after texturing, the emissive factor times its texture's mean (a flat glow: one
+// texture per actor).
 #pragma once
 
 #include <algorithm>
 #include <string>
+
+#include <glm/glm.hpp>
+#include <vtkProperty.h>
+#include <vtkUniforms.h>
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -43,15 +57,55 @@ inline vtkSmartPointer<vtkTexture> makeVtkTexture(const RgbaImage& image) {
     return texture;
 }
 
-inline void applyAlphaMode(vtkActor& actor, AlphaMode mode, float cutoff) {
-    if (mode == AlphaMode::Blend) return;
-    actor.ForceOpaqueOn();
+// How an actor draws its surface, beyond colours and texture (see the header comment).
+struct VtkMaterialLook {
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    glm::vec3 emissive{0.0f};          // linear RGB; zero: none
+    bool emissiveTimesTexture = false; // the emissive texture is the actor's texture
+};
+
+inline void applyMaterialLook(vtkActor& actor, const VtkMaterialLook& look) {
+    actor.GetProperty()->SetBackfaceCulling(look.doubleSided ? 0 : 1);
+    const bool emits = look.emissive != glm::vec3(0.0f);
+    // Decoded from sRGB (gamma 2.2), emission added, encoded again.
+    const std::string addEmission =
+        "  gl_FragData[0].rgb = pow(pow(max(gl_FragData[0].rgb, vec3(0.0)), vec3(2.2)) + "
+        "hlodEmissive, vec3(1.0 / 2.2));\n";
+    vtkShaderProperty* shader = actor.GetShaderProperty();
+    if (emits) {
+        const float e[3] = {look.emissive.r, look.emissive.g, look.emissive.b};
+        shader->GetFragmentCustomUniforms()->SetUniform3f("hlodEmissive", e);
+        if (look.emissiveTimesTexture)
+            shader->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+                                                 "//VTK::Light::Impl\n" + addEmission, false);
+    }
     std::string code = "//VTK::TCoord::Impl\n";
-    if (mode == AlphaMode::Mask)
-        code += "  if (gl_FragData[0].a < " + std::to_string(cutoff) + ") discard;\n";
-    code += "  gl_FragData[0].a = 1.0;\n";
-    actor.GetShaderProperty()->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, code,
-                                                            false);
+    if (emits && !look.emissiveTimesTexture) code += addEmission;
+    if (look.alphaMode == AlphaMode::Mask)
+        code += "  if (gl_FragData[0].a < " + std::to_string(look.alphaCutoff) + ") discard;\n";
+    if (look.alphaMode != AlphaMode::Blend) {
+        actor.ForceOpaqueOn();
+        code += "  gl_FragData[0].a = 1.0;\n";
+    }
+    if (code != "//VTK::TCoord::Impl\n")
+        shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, code, false);
+}
+
+// The look of scene material `material` for an actor drawing it (`textured`: with the
+// material's base colour texture on the actor).
+inline VtkMaterialLook materialLookOf(const Scene& scene, Id material, bool textured) {
+    VtkMaterialLook look;
+    if (material >= scene.materials.size()) return look;
+    const Material& m = scene.materials[material];
+    look.alphaMode = m.alphaMode;
+    look.alphaCutoff = m.alphaCutoff;
+    look.doubleSided = m.doubleSided;
+    look.emissiveTimesTexture =
+        textured && m.emissiveTexture != kNoId && m.emissiveTexture == m.texture;
+    look.emissive = look.emissiveTimesTexture ? m.emissive : m.effectiveEmissive();
+    return look;
 }
 
 } // namespace hlod::widgets

@@ -22,6 +22,31 @@ std::string nodePath(const Scene& s, Id node) {
     return path.empty() ? "/" : path;
 }
 
+const char* alphaModeName(AlphaMode mode) {
+    return mode == AlphaMode::Mask ? "MASK" : mode == AlphaMode::Blend ? "BLEND" : "OPAQUE";
+}
+
+// Every material as authored (Scene.h): the glTF names of its properties; textures by index
+// into "textures".
+nlohmann::json materialsJson(const Scene& s) {
+    nlohmann::json out = nlohmann::json::array();
+    for (Id i = 0; i < s.materials.size(); ++i) {
+        const Material& m = s.materials[i];
+        const glm::vec4& c = m.baseColor;
+        nlohmann::json mj = {{"id", i},
+                             {"name", m.name},
+                             {"base_color_factor", {c.r, c.g, c.b, c.a}},
+                             {"alpha_mode", alphaModeName(m.alphaMode)},
+                             {"double_sided", m.doubleSided},
+                             {"emissive_factor", {m.emissive.r, m.emissive.g, m.emissive.b}}};
+        if (m.alphaMode == AlphaMode::Mask) mj["alpha_cutoff"] = m.alphaCutoff;
+        if (m.texture != kNoId) mj["base_color_texture"] = m.texture;
+        if (m.emissiveTexture != kNoId) mj["emissive_texture"] = m.emissiveTexture;
+        out.push_back(std::move(mj));
+    }
+    return out;
+}
+
 nlohmann::json toJson(const LoadedScene& loaded, const ImportLimits& limits) {
     const Scene& s = loaded.scene;
     const SceneStats st = s.stats();
@@ -56,6 +81,7 @@ nlohmann::json toJson(const LoadedScene& loaded, const ImportLimits& limits) {
                              {"triangles", m.triangleCount()}});
     }
     j["instances"] = std::move(instances);
+    j["materials"] = materialsJson(s);
     nlohmann::json textures = nlohmann::json::array();
     for (const Texture& t : s.textures) {
         nlohmann::json tj = {{"name", t.name}, {"file", t.file.string()}};

@@ -2,7 +2,9 @@
 #include "pipeline/export/TileContent.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include <meshoptimizer.h>
 
@@ -55,32 +57,65 @@ const std::string& TextureStore::uriFor(Id material) {
     if (auto it = byMaterial_.find(material); it != byMaterial_.end()) return it->second;
     std::string& uri = byMaterial_[material];
     const Material& m = scene_.materials[material];
-    if (!m.hasTexture || m.baseColorTexture.empty()) return uri;
-    if (auto it = byFile_.find(m.baseColorTexture); it != byFile_.end()) {
-        uri = it->second;
-        return uri;
-    }
-    std::string& shared = byFile_[m.baseColorTexture];
-    std::optional<EncodedImage> image = loadTextureForGltf(m.baseColorTexture);
-    if (!image) return uri; // mean colour fallback, see the header
-    shared = "textures/" + toHex(hashBytes(image->bytes.data(), image->bytes.size())) +
-             (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
-    files_[shared] = std::move(image->bytes);
-    uri = shared;
+    if (m.hasTexture) uri = uriForFile(m.baseColorTexture);
     return uri;
 }
 
-// A scene mesh as leaves store it: optimised order, 8-bit colours, uvs only when textured.
+const std::string& TextureStore::emissiveUriFor(Id material) {
+    if (auto it = emissiveByMaterial_.find(material); it != emissiveByMaterial_.end())
+        return it->second;
+    std::string& uri = emissiveByMaterial_[material];
+    const Material& m = scene_.materials[material];
+    if (m.emits()) uri = uriForFile(m.emissiveTextureFile);
+    return uri;
+}
+
+std::string TextureStore::uriForFile(const std::filesystem::path& file) {
+    if (file.empty()) return {};
+    if (auto it = byFile_.find(file); it != byFile_.end()) return it->second;
+    std::string& shared = byFile_[file];
+    std::optional<EncodedImage> image = loadTextureForGltf(file);
+    if (!image) return shared; // mean colour fallback, see the header
+    shared = "textures/" + toHex(hashBytes(image->bytes.data(), image->bytes.size())) +
+             (image->mimeType == "image/jpeg" ? ".jpg" : ".png");
+    files_[shared] = std::move(image->bytes);
+    return shared;
+}
+
+// A scene mesh as leaves store it: optimised order, 8-bit colours, uvs only when textured,
+// its material as written (`look`: no geometry spans yet).
 struct ContentEncoder::Prepared {
     std::vector<glm::vec3> positions, normals;
     std::vector<glm::vec2> uvs;
     std::vector<glm::u8vec4> colors;
     std::vector<std::uint32_t> indices;
-    std::string uri;
-    glm::vec4 baseColor{1.0f};
-    std::string name, materialName;
-    Id material = 0;
+    GlbMesh look;
 };
+
+namespace {
+
+// A leaf's material as its tile writes it (TileContent.h): as authored where its textures are
+// written; where a texture cannot be (no uvs, an embedded or unreadable file) its mean stands
+// in, and a cut-out without its texture blends with the mean coverage instead.
+void writtenLook(const Material& mat, const std::string& uri, const std::string& emissiveUri,
+                 GlbMesh& g) {
+    g.materialName = mat.name;
+    g.baseColor = uri.empty() ? mat.effectiveColor() : mat.baseColor;
+    g.imageUri = uri;
+    g.alphaMode = mat.alphaMode;
+    g.alphaCutoff = mat.alphaCutoff;
+    if (uri.empty() && mat.alphaMode == AlphaMode::Mask)
+        g.alphaMode = g.baseColor.a < 1.0f ? AlphaMode::Blend : AlphaMode::Opaque;
+    if (g.alphaMode != AlphaMode::Mask) g.alphaCutoff = 0.5f;
+    g.doubleSided = mat.doubleSided;
+    if (!mat.emits()) return;
+    const bool sameImage = !uri.empty() && mat.emissiveTextureFile == mat.baseColorTexture;
+    g.emissiveUri = sameImage ? uri : emissiveUri;
+    // Without a written texture its mean stands in (the mean is 1 without a texture).
+    g.emissive = g.emissiveUri.empty() ? mat.effectiveEmissive() : mat.emissive;
+}
+
+} // namespace
 
 ContentEncoder::ContentEncoder(const Scene& scene, const BakeResult& bake, TextureStore& textures,
                                GlbCompression compression)
@@ -100,17 +135,13 @@ const ContentEncoder::Prepared& ContentEncoder::prepared(Id meshId) {
     p.indices = mesh.indices;
     for (const glm::vec4& c : mesh.colors)
         p.colors.push_back(quantizeColor(c));
-    p.uri = mesh.uvs.empty() ? std::string() : textures_.uriFor(mesh.material);
-    if (!p.uri.empty()) {
-        p.uvs = mesh.uvs;
-        p.baseColor = mat.baseColor;
-    } else {
-        p.baseColor = mat.effectiveColor();
-    }
+    const std::string uri = mesh.uvs.empty() ? std::string() : textures_.uriFor(mesh.material);
+    const std::string emissiveUri =
+        mesh.uvs.empty() ? std::string() : textures_.emissiveUriFor(mesh.material);
+    if (!uri.empty() || !emissiveUri.empty()) p.uvs = mesh.uvs;
     optimizeOrder(p.indices, p.positions.size(), p.positions, p.normals, p.uvs, p.colors);
-    p.name = mesh.name;
-    p.materialName = mat.name;
-    p.material = mesh.material;
+    writtenLook(mat, uri, emissiveUri, p.look);
+    p.look.name = mesh.name;
     return p;
 }
 
@@ -146,11 +177,14 @@ GlbMesh proxyGlbMesh(const ProxyMesh& proxy, const std::string& name) {
     m.positions = proxy.positions;
     m.normals = proxy.normals;
     m.indices = proxy.indices;
+    m.doubleSided = proxy.doubleSided;
+    m.emissive = proxy.emissive;
     if (proxy.hasAtlas()) { // the atlas carries the whole base colour (ProxyMesh.h)
         m.uvs = proxy.uvs;
         m.image = proxy.atlas->encoded;
         m.imageMimeType = proxy.atlas->mimeType;
-        m.alphaMask = proxy.atlas->mask;
+        m.alphaMode = proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque;
+        m.emissiveUsesImage = true; // the factor is relative to the atlas (ProxyLook.h)
     } else {
         m.colors = proxy.colors;
     }
@@ -185,7 +219,7 @@ EncodedContent ContentEncoder::encodeProxy(const ContentPlan& plan) {
 
 namespace {
 
-// Leaves merged into one primitive: the same material, texture and colour streams.
+// Leaves merged into one primitive: the same look (material as written) and colour streams.
 struct Merged {
     std::vector<glm::vec3> positions, normals;
     std::vector<glm::vec2> uvs;
@@ -205,13 +239,17 @@ void append(Merged& m, const auto& p, const glm::dmat4& matrix, LeafInContent& w
     where.vertexCount = p.positions.size();
 }
 
-GlbMesh lookOf(const auto& p) {
-    GlbMesh g;
-    g.name = p.name;
-    g.materialName = p.materialName;
-    g.baseColor = p.baseColor;
-    g.imageUri = p.uri;
-    return g;
+// What may share a merged primitive (TileContent.h): everything the written material holds
+// but its name, and which vertex streams the leaves carry.
+using LookKey = std::tuple<std::array<float, 4>, std::string, int, float, bool,
+                           std::array<float, 3>, std::string, bool, bool>;
+
+LookKey lookKeyOf(const GlbMesh& g, bool colors, bool uvs) {
+    const glm::vec4& c = g.baseColor;
+    const glm::vec3& e = g.emissive;
+    return {{c.r, c.g, c.b, c.a}, g.imageUri,    static_cast<int>(g.alphaMode),
+            g.alphaCutoff,        g.doubleSided, {e.r, e.g, e.b},
+            g.emissiveUri,        colors,        uvs};
 }
 
 } // namespace
@@ -222,9 +260,9 @@ EncodedContent ContentEncoder::encodeGroup(const ContentPlan& plan) {
     GlbScene glb;
     glb.compression = compression_;
     std::map<Id, int> meshIndex; // instanced scene mesh -> GLB mesh
-    // Merged primitives by look: base colour, texture, with or without colours (importers
-    // often give every object its own material of the same look).
-    std::map<std::tuple<float, float, float, float, std::string, bool>, Merged> merged;
+    // Merged primitives by look (importers often give every object its own material of the
+    // same look).
+    std::map<LookKey, Merged> merged;
     for (std::size_t i = 0; i < plan.leaves.size(); ++i) {
         const LeafSlot& s = plan.leaves[i];
         const Id meshId = scene_.instances[s.instance].mesh;
@@ -232,9 +270,8 @@ EncodedContent ContentEncoder::encodeGroup(const ContentPlan& plan) {
         out.triangles += p.indices.size() / 3;
         out.vertices += p.positions.size();
         if (s.merged) {
-            const glm::vec4& c = p.baseColor;
-            Merged& m = merged[{c.r, c.g, c.b, c.a, p.uri, !p.colors.empty()}];
-            if (m.members.empty()) m.look = lookOf(p);
+            Merged& m = merged[lookKeyOf(p.look, !p.colors.empty(), !p.uvs.empty())];
+            if (m.members.empty()) m.look = p.look;
             m.step = m.step > 0.0 ? std::min(m.step, s.positionStep) : s.positionStep;
             m.members.push_back(i);
             append(m, p, s.matrix, out.leaves[i]);
@@ -242,7 +279,7 @@ EncodedContent ContentEncoder::encodeGroup(const ContentPlan& plan) {
         }
         auto [it, added] = meshIndex.try_emplace(meshId, static_cast<int>(glb.meshes.size()));
         if (added) {
-            GlbMesh g = lookOf(p);
+            GlbMesh g = p.look;
             g.positions = p.positions;
             g.normals = p.normals;
             g.uvs = p.uvs;

@@ -1,8 +1,10 @@
 // The glTF content of one tile (PackageLayout.h says what goes where): a proxy (its baked atlas
 // embedded as the base colour texture, MASK when it has a cut-out; vertex colours when it has
-// none), or a leaf group: instanced meshes under nodes, the other leaves merged per material
-// into one primitive in the group's frame, each keeping its material: base colour and base
-// colour texture.
+// none; double-sided and emissive as ProxyLook.h decides), or a leaf group: instanced meshes
+// under nodes, the other leaves merged per look into one primitive in the group's frame, each
+// keeping its material as authored: base colour factor and texture, alpha mode and cut-off,
+// double-sidedness, emissive factor and texture. A look is all of those (not the name) plus
+// the vertex streams the leaves carry: leaves of different looks never share a primitive.
 // Vertex order: every mesh goes through meshoptimizer's vertex cache and vertex fetch
 // optimisation (Forsyth-like cache order, then vertices in first-use order; unreferenced
 // vertices dropped) before it is encoded, whatever the compression, so compressed and plain
@@ -12,7 +14,9 @@
 // as is, other formats re-encoded as PNG, TextureImage.h), and shared by every tile that uses
 // it. Without uvs, or when the file is missing or undecodable, or the texture was embedded in
 // the source (its bytes are not kept by the importers), the leaf uses the material's base
-// colour times the texture's mean colour.
+// colour times the texture's mean colour (a MASK material then blends with the mean coverage,
+// or is opaque when the mean is); the emissive texture likewise (factor times its mean when
+// it cannot be written).
 // Textured proxies: makeContent reads the proxy's geometry through proxyGlbMesh, the one place
 // that turns a ProxyMesh into a GlbMesh (uvs and an atlas image go there when proxies have
 // them).
@@ -35,15 +39,19 @@ namespace hlod {
 class TextureStore {
 public:
     explicit TextureStore(const Scene& scene) : scene_(scene) {}
-    // URI relative to tiles/ ("textures/<hash>.png"); empty when the material has no usable
-    // texture file.
+    // URI relative to tiles/ ("textures/<hash>.png") of the material's base colour texture;
+    // empty when the material has no usable texture file.
     const std::string& uriFor(Id material);
+    // The same for its emissive texture (empty when it emits nothing).
+    const std::string& emissiveUriFor(Id material);
     // Every texture used so far: URI relative to tiles/ -> bytes.
     const std::map<std::string, std::vector<std::uint8_t>>& files() const { return files_; }
 
 private:
+    std::string uriForFile(const std::filesystem::path& file);
+
     const Scene& scene_;
-    std::map<Id, std::string> byMaterial_;
+    std::map<Id, std::string> byMaterial_, emissiveByMaterial_;
     std::map<std::filesystem::path, std::string> byFile_;
     std::map<std::string, std::vector<std::uint8_t>> files_;
 };

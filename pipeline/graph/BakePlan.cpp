@@ -126,6 +126,10 @@ void hashScene(ContentHash& h, const Scene& scene) {
         h.addValue(m.texture);
         h.addValue(m.alphaMode);
         h.addValue(m.alphaCutoff);
+        h.addValue(static_cast<std::uint8_t>(m.doubleSided));
+        h.addValue(m.emissive);
+        h.addValue(m.emissiveTexture);
+        h.addValue(m.emissiveMean);
     }
     h.addValue(static_cast<std::uint64_t>(scene.textures.size()));
     for (const Texture& t : scene.textures) {

@@ -100,14 +100,20 @@ void chooseAlphaMode(Material& mat, bool translucentTexels) {
     }
 }
 
+// What the format's loader tells beyond assimp's material: for AC3D, the first texture its
+// object names (see Ac3dTextures.h) and whether its surfaces are two-sided.
+struct FormatHints {
+    bool ac3d = false;
+    std::string firstTexture; // empty: assimp's texture
+    bool twoSided = false;
+};
+
 class MaterialReader {
 public:
     MaterialReader(const aiScene* s, fs::path folder, Scene& scene, const ImportLimits& limits)
         : scene_(s), folder_(std::move(folder)), out_(scene), texels_(limits) {}
 
-    // `firstTexture`: the texture the source file names first for this material's object,
-    // when the format's loader kept another one (AC3D, see Ac3dTextures.h); empty otherwise.
-    Material read(const aiMaterial* m, const std::string& firstTexture) {
+    Material read(const aiMaterial* m, const FormatHints& hints) {
         Material mat;
         aiString name;
         if (m->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
@@ -120,24 +126,65 @@ public:
         if (m->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity > 0.0f) {
             mat.baseColor.a = std::min(opacity, 1.0f);
         }
+        int twoSided = 0;
+        mat.doubleSided =
+            hints.twoSided || (m->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS && twoSided != 0);
         aiString path;
-        if (!firstTexture.empty()) {
-            readTexture(firstTexture, mat);
+        TextureRef base;
+        if (!hints.firstTexture.empty()) {
+            base = readTexture(hints.firstTexture);
         } else if (m->GetTexture(aiTextureType_BASE_COLOR, 0, &path) == AI_SUCCESS ||
                    m->GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS) {
-            readTexture(path.C_Str(), mat);
+            base = readTexture(path.C_Str());
         }
+        mat.hasTexture = base.exists;
+        mat.baseColorTexture = base.file;
+        mat.texture = base.texture;
+        mat.textureMean = base.mean;
+        readEmissive(m, hints, base, mat);
         chooseAlphaMode(mat, mat.texture != kNoId && translucent_[mat.texture]);
         return mat;
     }
 
 private:
-    void readTexture(const std::string& ref, Material& mat) {
-        if (ref.empty()) return;
-        mat.hasTexture = true;
+    struct TextureRef {
+        bool exists = false;
+        fs::path file;      // empty when embedded
+        Id texture = kNoId; // kNoId when unreadable or outside the folder
+        glm::vec4 mean{1.0f};
+    };
+
+    // Emission: the emissive colour times the emissive texture. AC3D's `emis` has no texture
+    // of its own: OpenGL's modulate mode (AC3D, TORCS) multiplies emission and lighting alike
+    // by the object's texture, so the base colour texture is the emissive texture too.
+    void readEmissive(const aiMaterial* m, const FormatHints& hints, const TextureRef& base,
+                      Material& mat) {
+        aiColor4D e;
+        if (m->Get(AI_MATKEY_COLOR_EMISSIVE, e) != AI_SUCCESS) return;
+        const glm::vec3 emissive(e.r, e.g, e.b);
+        if (!(glm::all(glm::greaterThanEqual(emissive, glm::vec3(0.0f))) &&
+              glm::all(glm::lessThan(emissive, glm::vec3(1e6f)))))
+            return; // negative, NaN or absurd: no emission
+        mat.emissive = emissive;
+        if (!mat.emits()) return;
+        aiString path;
+        TextureRef tex;
+        if (hints.ac3d)
+            tex = base;
+        else if (m->GetTexture(aiTextureType_EMISSIVE, 0, &path) == AI_SUCCESS)
+            tex = readTexture(path.C_Str());
+        mat.emissiveTextureFile = tex.file;
+        mat.emissiveTexture = tex.texture;
+        mat.emissiveMean = glm::vec3(tex.mean);
+    }
+
+    TextureRef readTexture(const std::string& ref) {
+        TextureRef out;
+        if (ref.empty()) return out;
+        out.exists = true;
         if (const aiTexture* tex = scene_->GetEmbeddedTexture(ref.c_str())) {
-            useTexture(ref, mat, [&] { return embeddedTexture(tex, ref, texels_); });
-            return;
+            useTexture(ref, out, [&] { return embeddedTexture(tex, ref, texels_); });
+            return out;
         }
         std::string rel = ref;
         for (char& ch : rel) {
@@ -146,14 +193,15 @@ private:
         const fs::path p = (folder_ / rel).lexically_normal();
         // A texture outside the scene folder is not read (no reading of arbitrary files);
         // the material keeps its base colour.
-        if (!isInsideFolder(p, folder_)) return;
-        mat.baseColorTexture = p;
-        useTexture(p.string(), mat, [&] { return loadTexture(p, &texels_); });
+        if (!isInsideFolder(p, folder_)) return out;
+        out.file = p;
+        useTexture(p.string(), out, [&] { return loadTexture(p, &texels_); });
+        return out;
     }
 
     // One Texture per distinct reference, decoded once; its mean colour and whether it has
     // transparent texels computed once.
-    template <class Load> void useTexture(const std::string& key, Material& mat, Load load) {
+    template <class Load> void useTexture(const std::string& key, TextureRef& ref, Load load) {
         auto it = cache_.find(key);
         if (it == cache_.end()) {
             Texture t = load();
@@ -163,8 +211,8 @@ private:
             translucent_[id] = translucent;
             it = cache_.emplace(key, std::make_pair(id, mean)).first;
         }
-        mat.texture = it->second.first;
-        mat.textureMean = it->second.second;
+        ref.texture = it->second.first;
+        ref.mean = it->second.second;
     }
 
     const aiScene* scene_;
@@ -176,15 +224,22 @@ private:
 };
 
 // For AC3D files: per assimp material, the first texture its object names (see
-// Ac3dTextures.h), found by walking assimp's node tree and the file's object tree together.
-// Empty strings where nothing is known (other formats, or the trees do not pair up).
-std::vector<std::string> firstTexturesOfMaterials(const aiScene* as, const fs::path& file) {
-    std::vector<std::string> out(as->mNumMaterials);
+// Ac3dTextures.h), found by walking assimp's node tree and the file's object tree together,
+// and whether its surfaces are two-sided. Default hints where nothing is known (other formats,
+// or the trees do not pair up).
+std::vector<FormatHints> formatHints(const aiScene* as, const fs::path& file) {
+    std::vector<FormatHints> out(as->mNumMaterials);
     if (!isAc3dPath(file)) return out;
-    const std::optional<std::vector<Ac3dObject>> objects = readAc3dObjects(file);
-    if (!objects || objects->size() != 1) return out; // assimp adds a root for several
+    for (FormatHints& h : out)
+        h.ac3d = true;
+    const std::optional<Ac3dFile> ac = readAc3dFile(file);
+    if (!ac) return out;
+    if (const auto sides = ac3dTwoSidedMaterials(*ac, out.size()))
+        for (std::size_t m = 0; m < out.size(); ++m)
+            out[m].twoSided = (*sides)[m];
+    if (ac->objects.size() != 1) return out; // assimp adds a root for several
     std::vector<std::pair<const aiNode*, const Ac3dObject*>> stack{
-        {as->mRootNode, &objects->front()}};
+        {as->mRootNode, &ac->objects.front()}};
     while (!stack.empty()) {
         auto [node, object] = stack.back();
         stack.pop_back();
@@ -192,7 +247,7 @@ std::vector<std::string> firstTexturesOfMaterials(const aiScene* as, const fs::p
             const unsigned m = node->mMeshes[i];
             if (m >= as->mNumMeshes || !as->mMeshes[m]) continue;
             const unsigned mat = as->mMeshes[m]->mMaterialIndex;
-            if (mat < out.size()) out[mat] = object->firstTexture;
+            if (mat < out.size()) out[mat].firstTexture = object->firstTexture;
         }
         if (node->mNumChildren != object->kids.size()) continue; // trees differ: keep assimp's
         for (unsigned c = 0; c < node->mNumChildren; ++c)
@@ -336,12 +391,10 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
         if (f != fs::absolute(file).lexically_normal()) scene.referencedFiles.push_back(f);
     }
     MaterialReader materials(as, folder, scene, options.limits);
-    const std::vector<std::string> firstTextures = firstTexturesOfMaterials(as, file);
+    const std::vector<FormatHints> hints = formatHints(as, file);
     std::vector<Id> materialIds;
-    for (unsigned i = 0; i < as->mNumMaterials; ++i) {
-        materialIds.push_back(
-            scene.addMaterial(materials.read(as->mMaterials[i], firstTextures[i])));
-    }
+    for (unsigned i = 0; i < as->mNumMaterials; ++i)
+        materialIds.push_back(scene.addMaterial(materials.read(as->mMaterials[i], hints[i])));
     std::vector<Id> meshIds(as->mNumMeshes, kNoId);
     for (unsigned i = 0; i < as->mNumMeshes; ++i) {
         Mesh mesh = convertMesh(as->mMeshes[i]);

@@ -106,6 +106,7 @@ struct Doc {
     std::size_t fallbackBytes = 0;
     std::map<std::string, int> materials; // dumped material JSON -> index
     std::map<std::string, int> images;    // URI -> image index
+    bool emissiveStrength = false;        // some material uses KHR_materials_emissive_strength
     StreamData streams[kStreams];
     std::vector<std::pair<int, Stream>> streamAccessors; // accessor, its stream
 
@@ -170,15 +171,54 @@ struct Doc {
     }
 };
 
+// The image of `uri`, written once per file (shared texture files).
+int uriImageIndex(Doc& doc, const std::string& uri) {
+    if (auto it = doc.images.find(uri); it != doc.images.end()) return it->second;
+    doc.gltf["images"].push_back({{"uri", uri}});
+    return doc.images[uri] = static_cast<int>(doc.gltf["images"].size()) - 1;
+}
+
 int imageIndex(Doc& doc, const GlbMesh& m) {
-    if (m.image.empty()) {
-        if (auto it = doc.images.find(m.imageUri); it != doc.images.end()) return it->second;
-        doc.gltf["images"].push_back({{"uri", m.imageUri}});
-        return doc.images[m.imageUri] = static_cast<int>(doc.gltf["images"].size()) - 1;
-    }
+    if (m.image.empty()) return uriImageIndex(doc, m.imageUri);
     const int view = doc.plainView(m.image.data(), m.image.size(), 0);
     doc.gltf["images"].push_back({{"bufferView", view}, {"mimeType", m.imageMimeType}});
     return static_cast<int>(doc.gltf["images"].size()) - 1;
+}
+
+// The texture sampling `image` with the one sampler, written once per image.
+int textureIndex(Doc& doc, int image) {
+    constexpr int kLinear = 9729, kLinearMipmapLinear = 9987; // wrap: repeat by default
+    if (!doc.gltf.contains("samplers")) {
+        doc.gltf["samplers"] =
+            nlohmann::json::array({{{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}}});
+    }
+    const auto& textures = doc.gltf["textures"];
+    for (std::size_t t = 0; t < textures.size(); ++t) {
+        if (textures[t]["source"] == image) return static_cast<int>(t);
+    }
+    doc.gltf["textures"].push_back({{"sampler", 0}, {"source", image}});
+    return static_cast<int>(doc.gltf["textures"].size()) - 1;
+}
+
+// emissiveFactor (each channel at most 1, glTF 2.0 3.9.3), with KHR_materials_emissive_strength
+// carrying the rest, and emissiveTexture.
+void putEmissive(Doc& doc, const GlbMesh& m, int baseTexture, nlohmann::json& mat) {
+    const glm::vec3 e = glm::max(m.emissive, glm::vec3(0.0f));
+    if (e == glm::vec3(0.0f) || !std::isfinite(e.r + e.g + e.b)) return;
+    const float strength = std::max({e.r, e.g, e.b, 1.0f});
+    const glm::vec3 f = e / strength;
+    mat["emissiveFactor"] = {shortFloat(f.r), shortFloat(f.g), shortFloat(f.b)};
+    if (strength > 1.0f) {
+        mat["extensions"]["KHR_materials_emissive_strength"] = {
+            {"emissiveStrength", shortFloat(strength)}};
+        doc.emissiveStrength = true;
+    }
+    int texture = -1;
+    if (m.emissiveUsesImage)
+        texture = baseTexture;
+    else if (!m.uvs.empty() && !m.emissiveUri.empty())
+        texture = textureIndex(doc, uriImageIndex(doc, m.emissiveUri));
+    if (texture >= 0) mat["emissiveTexture"] = {{"index", texture}};
 }
 
 // The mesh's material (glTF 2.0 sections 3.8-3.9), written once per distinct content.
@@ -188,31 +228,20 @@ int materialIndex(Doc& doc, const GlbMesh& m) {
     if (c != glm::vec4(1.0f))
         pbr["baseColorFactor"] = {shortFloat(c.r), shortFloat(c.g), shortFloat(c.b),
                                   shortFloat(c.a)};
+    int baseTexture = -1;
     if (!m.uvs.empty() && (!m.image.empty() || !m.imageUri.empty())) {
-        constexpr int kLinear = 9729, kLinearMipmapLinear = 9987; // wrap: repeat by default
-        if (!doc.gltf.contains("samplers")) {
-            doc.gltf["samplers"] = nlohmann::json::array(
-                {{{"magFilter", kLinear}, {"minFilter", kLinearMipmapLinear}}});
-        }
-        const int image = imageIndex(doc, m);
-        int texture = -1;
-        const auto& textures = doc.gltf["textures"];
-        for (std::size_t t = 0; t < textures.size(); ++t) {
-            if (textures[t]["source"] == image) texture = static_cast<int>(t);
-        }
-        if (texture < 0) {
-            doc.gltf["textures"].push_back({{"sampler", 0}, {"source", image}});
-            texture = static_cast<int>(doc.gltf["textures"].size()) - 1;
-        }
-        pbr["baseColorTexture"] = {{"index", texture}};
+        baseTexture = textureIndex(doc, imageIndex(doc, m));
+        pbr["baseColorTexture"] = {{"index", baseTexture}};
     }
     nlohmann::json mat = {{"pbrMetallicRoughness", pbr}};
-    if (m.alphaMask) {
+    if (m.alphaMode == AlphaMode::Mask) {
         mat["alphaMode"] = "MASK";
         if (m.alphaCutoff != 0.5f) mat["alphaCutoff"] = shortFloat(m.alphaCutoff);
-    } else if (c.a < 1.0f) {
+    } else if (m.alphaMode == AlphaMode::Blend) {
         mat["alphaMode"] = "BLEND";
     }
+    if (m.doubleSided) mat["doubleSided"] = true;
+    putEmissive(doc, m, baseTexture, mat);
     // Meshes of the same look share a material whatever their names.
     const std::string k = mat.dump();
     if (auto it = doc.materials.find(k); it != doc.materials.end()) return it->second;
@@ -448,6 +477,7 @@ Doc buildDoc(const GlbScene& scene) {
         gltf["extensionsUsed"] = {kMeshopt, kQuantization};
         gltf["extensionsRequired"] = {kMeshopt, kQuantization};
     }
+    if (doc.emissiveStrength) gltf["extensionsUsed"].push_back("KHR_materials_emissive_strength");
     return doc;
 }
 

@@ -1,7 +1,9 @@
 // glTF 2.0 binary (GLB) writer for a flat scene of triangle meshes: each mesh one primitive with
 // positions, optional normals, texture coordinates and vertex colours (COLOR_0 as normalised
 // unsigned bytes, linear) and one PBR material (base colour factor and optional base colour
-// texture, metallic 0, roughness 1; alpha below 1 makes it BLEND, alphaMask MASK); each node
+// texture, metallic 0, roughness 1, the alpha mode and cut-off given, doubleSided, emissive
+// factor and texture; an emissive factor above 1 is written as its largest channel in
+// KHR_materials_emissive_strength and the factor divided by it); each node
 // places one mesh (or none) with a translation / rotation / scale in double precision (so
 // content far from the origin stays exact), all nodes roots of the one scene. Identical
 // materials are written once; a mesh referenced by several nodes is stored once (glTF
@@ -49,6 +51,7 @@
 #include <glm/glm.hpp>
 
 #include "pipeline/io/GltfTrs.h"
+#include "pipeline/scene/Scene.h"
 
 namespace hlod {
 
@@ -78,10 +81,18 @@ struct GlbMesh {
     // Meshopt only: the position grid asked for (metres of the mesh's frame; 0 = the finest
     // 16 bits allow). The grid used is positionGrid (GlbMeshopt.h) of it over the mesh's bounds.
     double positionStep = 0.0;
-    // glTF alphaMode MASK with this cut-off (textured cut-outs, e.g. a proxy atlas with
-    // alpha); otherwise OPAQUE, or BLEND when baseColor.a < 1.
-    bool alphaMask = false;
+    // glTF alphaMode as written (MASK: textured cut-outs, e.g. a proxy atlas with alpha;
+    // BLEND: baseColor.a and the texture's alpha blend); alphaCutoff for MASK only.
+    AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    // Linear RGB emissive factor (0: none). Its texture, sampled with TEXCOORD_0 and ignored
+    // without uvs: the base colour image again (emissiveUsesImage: one texture for both, as a
+    // proxy atlas standing for originals whose emission follows their texture), or a shared
+    // file like imageUri (emissiveUri); none when neither.
+    glm::vec3 emissive{0.0f};
+    bool emissiveUsesImage = false;
+    std::string emissiveUri;
 };
 
 struct GlbNode {

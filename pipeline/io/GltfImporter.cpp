@@ -10,6 +10,7 @@
 // EXT_meshopt_compression (gltfpack output, our own packages): decoded with meshoptimizer into a
 // plain GLB in memory before tinygltf parses it (GltfMeshopt.h).
 #include <cctype>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -185,10 +186,63 @@ AlphaMode alphaModeOf(const std::string& mode) {
     return AlphaMode::Opaque;
 }
 
+// The scene texture of glTF texture `tex` (each image added once; its mean colour computed
+// once), with the image's file when it has one.
+class GltfTextures {
+public:
+    GltfTextures(const tinygltf::Model& model, LoadContext& ctx, Scene& scene)
+        : model_(model), ctx_(ctx), scene_(scene) {}
+
+    struct Ref {
+        bool exists = false;  // the texture names an image
+        fs::path file;        // empty when embedded
+        Id texture = kNoId;   // kNoId when the image could not be decoded
+        glm::vec4 mean{1.0f}; // linear mean of the decoded image
+    };
+
+    Ref get(int tex) {
+        Ref ref;
+        if (tex < 0 || tex >= static_cast<int>(model_.textures.size())) return ref;
+        const int img = model_.textures[static_cast<std::size_t>(tex)].source;
+        if (img < 0 || img >= static_cast<int>(model_.images.size())) return ref;
+        ref.exists = true;
+        const std::string& uri = model_.images[static_cast<std::size_t>(img)].uri;
+        if (!uri.empty() && uri.rfind("data:", 0) != 0)
+            ref.file = fs::absolute(ctx_.folder / uri).lexically_normal();
+        const auto it = ctx_.images.find(img);
+        if (it == ctx_.images.end()) return ref;
+        auto [known, added] = textureOfImage_.try_emplace(img, kNoId);
+        if (added) {
+            it->second.file = ref.file;
+            known->second = scene_.addTexture(it->second);
+            if (const auto& image = it->second.image)
+                means_[known->second] = meanLinearColor(*image);
+        }
+        ref.texture = known->second;
+        if (auto mean = means_.find(ref.texture); mean != means_.end()) ref.mean = mean->second;
+        return ref;
+    }
+
+private:
+    const tinygltf::Model& model_;
+    LoadContext& ctx_;
+    Scene& scene_;
+    std::map<int, Id> textureOfImage_;
+    std::map<Id, glm::vec4> means_;
+};
+
+// KHR_materials_emissive_strength: the factor that scales emissiveFactor (1 without it).
+double emissiveStrength(const tinygltf::Material& m) {
+    const auto ext = m.extensions.find("KHR_materials_emissive_strength");
+    if (ext == m.extensions.end() || !ext->second.Has("emissiveStrength")) return 1.0;
+    const tinygltf::Value& v = ext->second.Get("emissiveStrength");
+    const double strength = v.IsNumber() ? v.GetNumberAsDouble() : 1.0;
+    return std::isfinite(strength) && strength >= 0.0 ? strength : 1.0;
+}
+
 std::vector<Id> importMaterials(const tinygltf::Model& model, LoadContext& ctx, Scene& scene) {
     std::vector<Id> ids;
-    std::map<int, Id> textureOfImage;
-    std::map<Id, glm::vec4> means; // per texture, computed once
+    GltfTextures textures(model, ctx, scene);
     for (const tinygltf::Material& m : model.materials) {
         Material mat;
         mat.name = m.name;
@@ -196,28 +250,22 @@ std::vector<Id> importMaterials(const tinygltf::Model& model, LoadContext& ctx, 
         if (f.size() == 4) mat.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
         mat.alphaMode = alphaModeOf(m.alphaMode);
         mat.alphaCutoff = static_cast<float>(m.alphaCutoff);
-        const int tex = m.pbrMetallicRoughness.baseColorTexture.index;
-        if (tex >= 0 && tex < static_cast<int>(model.textures.size())) {
-            const int img = model.textures[static_cast<std::size_t>(tex)].source;
-            if (img >= 0 && img < static_cast<int>(model.images.size())) {
-                mat.hasTexture = true;
-                const std::string& uri = model.images[static_cast<std::size_t>(img)].uri;
-                if (!uri.empty() && uri.rfind("data:", 0) != 0) {
-                    mat.baseColorTexture = fs::absolute(ctx.folder / uri).lexically_normal();
-                }
-                if (auto it = ctx.images.find(img); it != ctx.images.end()) {
-                    auto [known, added] = textureOfImage.try_emplace(img, kNoId);
-                    if (added) {
-                        it->second.file = mat.baseColorTexture;
-                        known->second = scene.addTexture(it->second);
-                        if (const auto& image = it->second.image)
-                            means[known->second] = meanLinearColor(*image);
-                    }
-                    mat.texture = known->second;
-                    if (auto mean = means.find(mat.texture); mean != means.end())
-                        mat.textureMean = mean->second;
-                }
-            }
+        mat.doubleSided = m.doubleSided;
+        const GltfTextures::Ref base = textures.get(m.pbrMetallicRoughness.baseColorTexture.index);
+        mat.hasTexture = base.exists;
+        mat.baseColorTexture = base.file;
+        mat.texture = base.texture;
+        mat.textureMean = base.mean;
+        const auto& e = m.emissiveFactor;
+        if (e.size() == 3) {
+            const double strength = emissiveStrength(m);
+            mat.emissive = glm::vec3(glm::dvec3(e[0], e[1], e[2]) * strength);
+        }
+        const GltfTextures::Ref emissive = textures.get(m.emissiveTexture.index);
+        if (emissive.exists && mat.emits()) {
+            mat.emissiveTextureFile = emissive.file;
+            mat.emissiveTexture = emissive.texture;
+            mat.emissiveMean = glm::vec3(emissive.mean);
         }
         ids.push_back(scene.addMaterial(std::move(mat)));
     }

@@ -22,6 +22,7 @@
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/proxy/ProxyCache.h"
+#include "pipeline/proxy/ProxyLook.h"
 #include "pipeline/proxy/SloppyProxy.h"
 
 namespace hlod {
@@ -150,6 +151,14 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
             h.addValue(scene.materials[mat].effectiveColor());
             h.addValue(glm::dmat3(scene.nodes[inst.node].world));
             if (params.atlas.enabled) h.addValue(leafLookHash(scene, node.instance, texHash));
+            // Sides and emission decide the proxy's (ProxyLook.h); hashed only when set, so
+            // the keys of scenes without them are unchanged.
+            const Material& m = scene.materials[mat];
+            if (m.doubleSided || m.emits()) {
+                h.addValue(static_cast<std::uint8_t>(m.doubleSided));
+                h.addValue(m.effectiveEmissive());
+                h.addValue(static_cast<std::uint8_t>(m.emissiveTexture == m.texture));
+            }
         }
         nodes[id].key = h.digest();
     }
@@ -205,7 +214,8 @@ struct BakeRun {
     std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> bakedByKey;
     std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0}, damaged{0};
     tbb::task_group group;
-    TextureMips mips; // source texture pyramids, shared by every node's atlas
+    TextureMips mips;                 // source texture pyramids, shared by every node's atlas
+    std::vector<ProxyLookSums> looks; // per node, over its originals (ProxyLook.h)
 
     // The representations node `id` is baked from: its children, a dissolved child replaced
     // by its own inputs (already expanded when that child was decided).
@@ -332,6 +342,7 @@ struct BakeRun {
                 store = true;
             }
             if (store) cache.store(nb.key, nb.proxy);
+            applyProxyLook(nb.proxy, looks[id]); // not cached: derived from the originals
             if (owner) owner->set_value(nb.proxy);
         } catch (...) {
             if (owner) owner->set_exception(std::current_exception());
@@ -384,6 +395,7 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
 
     BakeRun run{scene, tree, params, progress, ProxyCache(params.cacheDir), result, {}, {}};
     run.pending = std::make_unique<std::atomic<int>[]>(tree.nodes.size());
+    run.looks = subtreeLookSums(scene, tree, order);
     run.standIns.resize(tree.nodes.size());
     std::vector<Id> ready;
     for (Id id : order) {

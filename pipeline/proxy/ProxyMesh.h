@@ -45,6 +45,12 @@ struct ProxyMesh {
     // this proxy gets only the rest of its own budget for it, so errors never add up past a
     // node's budget (DecimateProxy.h). 0 for an aggregated input of original meshes only.
     float errorBound = 0.0f;
+    // How it is drawn besides its base colour (ProxyLook.h, set by the baker from the originals
+    // it stands for, not stored in the proxy cache): from both sides, and the linear emissive
+    // factor (with an atlas: times the atlas, which is the emissive texture too; without: the
+    // emitted colour itself).
+    bool doubleSided = false;
+    glm::vec3 emissive{0.0f};
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     std::size_t vertexCount() const { return positions.size(); }

@@ -15,6 +15,16 @@ Aabb Aabb::transformed(const glm::dmat4& m) const {
     return out;
 }
 
+bool sameLook(const Material& a, const Material& b) {
+    const bool mask = a.alphaMode == AlphaMode::Mask;
+    return a.baseColor == b.baseColor && a.texture == b.texture &&
+           a.baseColorTexture == b.baseColorTexture && a.textureMean == b.textureMean &&
+           a.alphaMode == b.alphaMode && (!mask || a.alphaCutoff == b.alphaCutoff) &&
+           a.doubleSided == b.doubleSided && a.emissive == b.emissive &&
+           a.emissiveTexture == b.emissiveTexture &&
+           a.emissiveTextureFile == b.emissiveTextureFile && a.emissiveMean == b.emissiveMean;
+}
+
 Aabb Mesh::localBounds() const {
     Aabb b;
     for (const glm::vec3& p : positions)
@@ -106,6 +116,7 @@ void Scene::append(Scene&& other, const std::string& name) {
     }
     for (Material& m : other.materials) {
         if (m.texture != kNoId) m.texture += texBase;
+        if (m.emissiveTexture != kNoId) m.emissiveTexture += texBase;
         materials.push_back(std::move(m));
     }
     for (Texture& t : other.textures)

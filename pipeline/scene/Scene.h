@@ -38,6 +38,9 @@ struct Texture {
 // (texels below it are not drawn, the rest opaque), or blended.
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
+// A material as authored (glTF 2.0 metallic-roughness subset, section 3.9): what every later
+// stage keeps (leaf tiles, proxies, the package, the viewport, `hlod bench`). Two materials
+// that agree on all of these draw alike (sameLook); names do not matter.
 struct Material {
     std::string name;
     glm::vec4 baseColor{1.0f};              // linear RGBA factor
@@ -47,10 +50,27 @@ struct Material {
     Id texture = kNoId;                     // index into Scene::textures, kNoId when none
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f; // AlphaMode::Mask only
+    // Drawn from both sides (glTF doubleSided); otherwise back faces are culled.
+    bool doubleSided = false;
+    // Emitted light added after lighting: linear RGB factor (may exceed 1, as glTF's
+    // KHR_materials_emissive_strength allows) times the emissive texture when there is one
+    // (sampled with the same uvs as the base colour texture; AC3D's `emis` uses the base
+    // colour texture itself, as OpenGL's modulate mode does in TORCS).
+    glm::vec3 emissive{0.0f};
+    std::filesystem::path emissiveTextureFile; // absolute path, empty when none or embedded
+    Id emissiveTexture = kNoId;                // index into Scene::textures, kNoId when none
+    glm::vec3 emissiveMean{1.0f};              // mean linear RGB of that texture
 
     // The colour a proxy uses for this material: base colour times the texture's mean.
     glm::vec4 effectiveColor() const { return baseColor * textureMean; }
+    // The emitted colour where the emissive texture cannot be drawn: factor times its mean.
+    glm::vec3 effectiveEmissive() const { return emissive * emissiveMean; }
+    bool emits() const { return emissive != glm::vec3(0.0f); }
 };
+
+// True when `a` and `b` draw alike: same base colour factor and texture, alpha mode and
+// cut-off, sidedness and emissive factor and texture (the name is not compared).
+bool sameLook(const Material& a, const Material& b);
 
 // Triangle mesh, 32-bit indices, one material. Normals are always present (computed on import
 // when the source has none); uvs (v = 0 at the image top, as glTF), colors: none or one each.

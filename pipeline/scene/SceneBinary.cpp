@@ -12,7 +12,7 @@ namespace hlod {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x534c4448; // "HDLS"
-constexpr std::uint32_t kVersion = 3;
+constexpr std::uint32_t kVersion = 4;        // 4: doubleSided and emissive
 
 class Writer {
 public:
@@ -107,6 +107,11 @@ std::string writeSceneBinary(const Scene& s) {
         w.pod(m.texture);
         w.pod(m.alphaMode);
         w.pod(m.alphaCutoff);
+        w.pod<std::uint8_t>(m.doubleSided ? 1 : 0);
+        w.pod(m.emissive);
+        w.str(m.emissiveTextureFile.string());
+        w.pod(m.emissiveTexture);
+        w.pod(m.emissiveMean);
     }
     w.pod<std::uint64_t>(s.textures.size());
     for (const Texture& t : s.textures) {
@@ -163,6 +168,11 @@ Scene readSceneBinary(const std::string& bytes, const std::filesystem::path& ori
         m.alphaMode = r.pod<AlphaMode>();
         m.alphaCutoff = r.pod<float>();
         if (m.alphaMode > AlphaMode::Blend) r.fail();
+        m.doubleSided = r.pod<std::uint8_t>() != 0;
+        m.emissive = r.pod<glm::vec3>();
+        m.emissiveTextureFile = r.str();
+        m.emissiveTexture = r.pod<Id>();
+        m.emissiveMean = r.pod<glm::vec3>();
     }
     s.textures.resize(r.count(24));
     for (Texture& t : s.textures) {
@@ -181,6 +191,7 @@ Scene readSceneBinary(const std::string& bytes, const std::filesystem::path& ori
     }
     for (const Material& m : s.materials) {
         if (m.texture != kNoId && m.texture >= s.textures.size()) r.fail();
+        if (m.emissiveTexture != kNoId && m.emissiveTexture >= s.textures.size()) r.fail();
     }
     s.instances = r.array<MeshInstance>();
     s.sourceFiles.resize(r.count(8));

@@ -56,6 +56,27 @@ TEST(Cli, InfoJsonOnTheEngineMatchesSourceCounts) {
     EXPECT_EQ(j["bounds"]["unit"], "m");
 }
 
+TEST(Cli, InfoJsonListsTheTorcsMaterialsAsAuthored) {
+    const auto r = runCli({"info", scene("torcs-spring/spring.acc"), "--json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    // assimp makes one material per object and material (4418 meshes), plus our default.
+    ASSERT_EQ(j["materials"].size(), 4419u);
+    std::size_t mask = 0, emitsThroughTexture = 0, doubleSided = 0;
+    for (const auto& m : j["materials"]) {
+        mask += m["alpha_mode"] == "MASK" ? 1 : 0;
+        doubleSided += m["double_sided"].get<bool>() ? 1 : 0;
+        // spring.acc's one MATERIAL line: rgb 0.4 0.4 0.4 ... emis 0.4 0.4 0.4.
+        if (m["emissive_factor"][0].get<double>() > 0.39 && m.contains("emissive_texture") &&
+            m["emissive_texture"] == m["base_color_texture"])
+            ++emitsThroughTexture;
+    }
+    EXPECT_EQ(emitsThroughTexture, 4418u);
+    EXPECT_EQ(doubleSided, 0u); // every SURF line of spring.acc is 0x14 (a shaded strip)
+    // The objects whose texture has transparent texels (trees, fences): cut-outs at 0.5.
+    EXPECT_EQ(mask, 102u);
+}
+
 TEST(Cli, InfoJsonListsTheStepAssemblyPartsByName) {
     const auto r = runCli({"info", scene("as1-assembly/as1-oc-214.stp"), "--json"});
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -11,6 +11,7 @@
 #include <QWheelEvent>
 #include <glm/glm.hpp>
 #include <vtkCamera.h>
+#include <vtkRenderer.h>
 
 #include "TestScenes.h"
 #include "pipeline/io/Import.h"
@@ -137,6 +138,49 @@ TEST_F(ViewportTest, ClearingTheSceneLeavesOnlyBackground) {
     EXPECT_GT(test::foregroundShare(viewport->grabFrame(), background), 0.05);
     viewport->clearScene();
     EXPECT_EQ(test::foregroundShare(viewport->grabFrame(), background), 0.0);
+}
+
+// One unit quad in z = 0 whose front faces +Z, seen from -Z (its back): a one-sided material
+// is culled as engines cull it, a double-sided one is drawn. And a black quad facing the
+// camera that emits red shows red (emission added after lighting). Both layouts.
+Scene quadScene(bool doubleSided, bool facingCamera, glm::vec3 emissive) {
+    Scene s;
+    Material m;
+    m.baseColor = emissive == glm::vec3(0.0f) ? glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)
+                                              : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    m.doubleSided = doubleSided;
+    m.emissive = emissive;
+    Mesh quad;
+    quad.positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
+    quad.indices = facingCamera ? std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2}
+                                : std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3};
+    quad.material = s.addMaterial(m);
+    s.addInstance(s.addMesh(std::move(quad)), s.addNode("quad", 0));
+    return s;
+}
+
+TEST_F(ViewportTest, BackFacesAreCulledUnlessDoubleSidedAndEmissionIsAdded) {
+    for (std::size_t mergeAbove : {std::size_t(1000), std::size_t(0)}) {
+        auto look = [&](const Scene& scene) {
+            show(scene, {.mergeAbove = mergeAbove, .maxMergedParts = 0}); // 0: by opacity
+            vtkCamera* camera = viewport->camera();
+            camera->SetPosition(0, 0, -3);
+            camera->SetFocalPoint(0, 0, 0);
+            camera->SetViewUp(0, 1, 0);
+            viewport->renderer()->ResetCameraClippingRange();
+            return viewport->grabFrame();
+        };
+        EXPECT_EQ(test::foregroundShare(look(quadScene(false, false, {})), background), 0.0)
+            << "a back face was drawn, mergeAbove " << mergeAbove;
+        EXPECT_GT(test::foregroundShare(look(quadScene(true, false, {})), background), 0.05)
+            << "a double-sided back face was culled, mergeAbove " << mergeAbove;
+        const QColor centre = look(quadScene(false, true, {1.0f, 0.0f, 0.0f})).pixelColor(240, 180);
+        // Black lit is the viewport's white specular highlight at most (0.12 of white); the
+        // emission makes it red.
+        EXPECT_GE(centre.red(), 250) << "mergeAbove " << mergeAbove;
+        EXPECT_LE(centre.green(), 60);
+        EXPECT_LE(centre.blue(), 60);
+    }
 }
 
 // Sends a drag from `from` to `to` with `button` held (QTest::mouseMove carries no buttons).

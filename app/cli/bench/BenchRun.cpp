@@ -1,6 +1,7 @@
 #include "BenchRun.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -89,18 +90,24 @@ std::string formatCount(double v) {
 }
 
 // Per-frame look of merged leaves: one merged primitive per look, as the package merges them
-// (TileContent.h: base colour, texture, alpha, and which vertex streams the leaves carry).
-using MergeKey = std::tuple<float, float, float, float, float, float, float, float,
-                            const RgbaImage*, int, float, bool, bool, bool>;
+// (TileContent.h: base colour, texture, alpha, sides, emission, and which vertex streams the
+// leaves carry).
+using MergeKey = std::tuple<std::array<float, 8>, const RgbaImage*, int, float, bool,
+                            std::array<float, 6>, bool, bool, bool, bool>;
 
 MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh& mesh) {
-    return {color.r,           color.g,
-            color.b,           color.a,
-            look.factor.r,     look.factor.g,
-            look.factor.b,     look.factor.a,
-            look.texture,      static_cast<int>(look.alphaMode),
-            look.alphaCutoff,  !mesh.normals.empty(),
-            !mesh.uvs.empty(), !mesh.colors.empty()};
+    const glm::vec4& f = look.factor;
+    const glm::vec3 &e = look.emissive, &em = look.emissiveMean;
+    return {{color.r, color.g, color.b, color.a, f.r, f.g, f.b, f.a},
+            look.texture,
+            static_cast<int>(look.alphaMode),
+            look.alphaCutoff,
+            look.doubleSided,
+            {e.r, e.g, e.b, em.r, em.g, em.b},
+            look.emissiveIsTexture,
+            !mesh.normals.empty(),
+            !mesh.uvs.empty(),
+            !mesh.colors.empty()};
 }
 
 // The package's contents as drawables: a proxy draws its node's proxy; a leaf group draws its

@@ -31,8 +31,9 @@ namespace hlod::cli {
 
 namespace {
 
-using widgets::applyAlphaMode;
+using widgets::applyMaterialLook;
 using widgets::makeVtkTexture;
+using widgets::VtkMaterialLook;
 
 float toSrgb(float c) {
     c = std::clamp(c, 0.0f, 1.0f);
@@ -45,13 +46,11 @@ unsigned char toByte(float c) {
 
 // `factor` multiplies the vertex colours (Textured shading: the material's base colour factor,
 // since VTK ignores the actor colour when a mesh has scalars); RGBA scalars when `withAlpha`.
-vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
-                                      const std::vector<glm::vec3>& normals,
-                                      const std::vector<std::uint32_t>& indices,
-                                      const std::vector<glm::vec4>* colorsLinear,
-                                      const std::vector<glm::u8vec4>* colors8,
-                                      const std::vector<glm::vec2>* uvs = nullptr,
-                                      glm::vec4 factor = glm::vec4(1.0f), bool withAlpha = false) {
+vtkSmartPointer<vtkPolyData>
+makePoly(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+         const std::vector<std::uint32_t>& indices, const std::vector<glm::vec4>* colorsLinear,
+         const std::vector<glm::u8vec4>* colors8, const std::vector<glm::vec2>* uvs = nullptr,
+         glm::vec4 factor = glm::vec4(1.0f), bool withAlpha = false) {
     const auto nv = static_cast<vtkIdType>(positions.size());
     const auto nt = static_cast<vtkIdType>(indices.size() / 3);
     vtkNew<vtkFloatArray> points;
@@ -91,8 +90,9 @@ vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
         unsigned char* p = c->GetPointer(0);
         for (vtkIdType i = 0; i < nv; ++i) {
             const glm::vec4 lin =
-                factor * (colorsLinear ? (*colorsLinear)[static_cast<std::size_t>(i)]
-                                       : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f);
+                factor * (colorsLinear
+                              ? (*colorsLinear)[static_cast<std::size_t>(i)]
+                              : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f);
             for (int k = 0; k < 3; ++k)
                 p[comps * i + k] = toByte(toSrgb(lin[k]));
             if (withAlpha) p[comps * i + 3] = toByte(lin.a);
@@ -108,6 +108,15 @@ vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
         poly->GetPointData()->SetTCoords(t);
     }
     return poly;
+}
+
+// Mean linear RGB of 8-bit vertex colours (white when there are none).
+glm::vec3 meanColor(const std::vector<glm::u8vec4>& colors) {
+    if (colors.empty()) return glm::vec3(1.0f);
+    glm::dvec3 sum(0.0);
+    for (const glm::u8vec4& c : colors)
+        sum += glm::dvec3(c.r, c.g, c.b) / 255.0;
+    return glm::vec3(sum / static_cast<double>(colors.size()));
 }
 
 vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
@@ -139,12 +148,25 @@ struct OffscreenRenderer::Impl {
         return texture;
     }
 
-    // Textured shading: the material's texture and cut-out on the actor (see SurfaceLook).
+    // The look on the actor for this renderer's shading (see Shading): sides always; alpha,
+    // texture and emission in Textured; emission (flat) in Colour.
     void applyLook(vtkActor& actor, const SurfaceLook& look, bool hasUvs) {
-        if (look.texture && hasUvs) actor.SetTexture(textureFor(*look.texture));
-        applyAlphaMode(actor, look.alphaMode, look.alphaCutoff);
-        if (look.alphaMode == AlphaMode::Blend)
-            actor.GetProperty()->SetOpacity(std::clamp(double(look.factor.a), 0.05, 1.0));
+        VtkMaterialLook vtk;
+        vtk.doubleSided = look.doubleSided;
+        if (shading == Shading::Textured) {
+            const bool textured = look.texture && hasUvs;
+            if (textured) actor.SetTexture(textureFor(*look.texture));
+            vtk.alphaMode = look.alphaMode;
+            vtk.alphaCutoff = look.alphaCutoff;
+            vtk.emissiveTimesTexture = textured && look.emissiveIsTexture;
+            vtk.emissive =
+                look.emissive * (vtk.emissiveTimesTexture ? glm::vec3(1.0f) : look.emissiveMean);
+            if (look.alphaMode == AlphaMode::Blend)
+                actor.GetProperty()->SetOpacity(std::clamp(double(look.factor.a), 0.05, 1.0));
+        } else if (shading == Shading::Colour) {
+            vtk.emissive = look.emissive * look.emissiveMean;
+        }
+        applyMaterialLook(actor, vtk);
     }
 
     vtkSmartPointer<vtkActor> makeActor(vtkPolyData* poly, const glm::vec4& color,
@@ -234,14 +256,14 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
     if (!poly) {
         // Textured: the factor goes into the vertex colours (one material per Mesh, so the
         // shared polydata is right for every instance).
-        poly = makePoly(mesh.positions, mesh.normals, mesh.indices,
-                        vertexColors ? &mesh.colors : nullptr, nullptr,
-                        textured ? &mesh.uvs : nullptr, textured ? look.factor : glm::vec4(1.0f),
-                        textured);
+        poly =
+            makePoly(mesh.positions, mesh.normals, mesh.indices,
+                     vertexColors ? &mesh.colors : nullptr, nullptr, textured ? &mesh.uvs : nullptr,
+                     textured ? look.factor : glm::vec4(1.0f), textured);
     }
     // Colour: vertex colours replace the actor colour (VTK ignores it with scalars).
     auto actor = impl_->makeActor(poly, textured ? look.factor : color, vertexColors);
-    if (textured) impl_->applyLook(*actor, look, hasUvs);
+    impl_->applyLook(*actor, look, hasUvs);
     if (world != glm::dmat4(1.0)) actor->SetUserMatrix(toVtk(world));
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
@@ -256,14 +278,18 @@ int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
     auto poly = makePoly(proxy.positions, proxy.normals, proxy.indices, nullptr,
                          colour && !atlas ? &proxy.colors : nullptr, atlas ? &proxy.uvs : nullptr);
     auto actor = impl_->makeActor(poly, glm::vec4(1.0f), colour && !atlas && !proxy.colors.empty());
+    SurfaceLook look;
+    look.doubleSided = proxy.doubleSided;
+    look.emissive = proxy.emissive;
     if (atlas) {
-        SurfaceLook look;
         look.texture = proxy.atlas->image.get();
         look.alphaMode = proxy.atlas->mask ? AlphaMode::Mask : AlphaMode::Opaque;
-        impl_->applyLook(*actor, look, true);
-    } else if (impl_->shading == Shading::Textured) {
-        applyAlphaMode(*actor, AlphaMode::Opaque, 0.5f);
+        look.emissiveIsTexture = true; // the factor is relative to the atlas (ProxyLook.h)
+    } else if (proxy.hasAtlas()) {
+        // Colour shading of an atlas proxy: the emission rides on the vertex colours' mean.
+        look.emissiveMean = meanColor(proxy.colors);
     }
+    impl_->applyLook(*actor, look, atlas);
     actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
@@ -279,6 +305,10 @@ SurfaceLook lookOf(const Scene& scene, Id material) {
     look.texture = scene.textureImage(material);
     look.alphaMode = m.alphaMode;
     look.alphaCutoff = m.alphaCutoff;
+    look.doubleSided = m.doubleSided;
+    look.emissive = m.emissive;
+    look.emissiveMean = m.emissiveMean;
+    look.emissiveIsTexture = m.emissiveTexture != kNoId && m.emissiveTexture == m.texture;
     return look;
 }
 

@@ -20,8 +20,11 @@
 namespace hlod::cli {
 
 // Geometry: one grey for everything. Colour: material colour (base colour x texture mean) x
-// vertex colour, as a proxy with vertex colours shows it. Textured: base colour factor x base
-// colour texture x vertex colour, alpha cut-out (MASK) honoured, what an engine draws.
+// vertex colour, as a proxy with vertex colours shows it, plus the emitted colour (emissive
+// factor x its texture's mean). Textured: base colour factor x base colour texture x vertex
+// colour, alpha as the material says (MASK tested at its cut-off, BLEND blended), plus
+// emission (VtkSurfaceLook.h), what an engine draws. In all three, back faces are culled
+// unless the material (or the proxy, ProxyLook.h) is double-sided, as engines do.
 // All three use the same simple lighting (ambient + diffuse from a headlight), colours given
 // to the GPU as sRGB values (products of sRGB values are close to the sRGB of the product).
 enum class Shading { Geometry, Colour, Textured };
@@ -29,10 +32,14 @@ enum class Shading { Geometry, Colour, Textured };
 // What Textured shading needs of a surface. `texture` must outlive the renderer (it is shared
 // by every drawable using it, uploaded once with mipmaps, repeat wrap, linear filtering).
 struct SurfaceLook {
-    glm::vec4 factor{1.0f};            // linear RGBA base colour factor
+    glm::vec4 factor{1.0f};             // linear RGBA base colour factor
     const RgbaImage* texture = nullptr; // sRGB RGBA, top row first; null = untextured
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+    glm::vec3 emissive{0.0f};       // linear emissive factor
+    glm::vec3 emissiveMean{1.0f};   // mean of its texture (where the texture is not drawn)
+    bool emissiveIsTexture = false; // the emissive texture is `texture`
 };
 
 // The look of a scene material.
@@ -52,7 +59,8 @@ public:
     int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color,
                 const SurfaceLook& look = {});
     // A proxy: its vertex colours in Colour shading; its baked atlas in Textured shading
-    // (vertex colours when it has none). The atlas image must outlive the renderer.
+    // (vertex colours when it has none); its sidedness and emission (ProxyMesh.h) in both.
+    // The atlas image must outlive the renderer.
     int addProxy(int layer, const ProxyMesh& proxy);
 
     // Makes exactly `drawables` of `layer` visible (indices returned by add*).

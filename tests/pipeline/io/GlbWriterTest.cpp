@@ -196,3 +196,47 @@ TEST(GlbWriter, MeshesSharingViewsReadBackInTinyGltf) {
     EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorFactor,
               (std::vector<double>{1, 1, 1, 1}));
 }
+
+// Materials as given (issue 28): alpha mode and cut-off, doubleSided, emissive factor and
+// texture, written once per look; an emissive factor above 1 as KHR_materials_emissive_strength.
+TEST(GlbWriter, MaterialLooksAreWrittenAsGiven) {
+    const ThreeMeshes t;
+    GlbScene s = t.scene(GlbCompression::None, true);
+    // Mesh 0: a cut-out at 0.3, two-sided, emitting through its own image (a proxy atlas).
+    s.meshes[0].uvs = t.uvs;
+    s.meshes[0].image = std::vector<std::uint8_t>{1, 2, 3, 4}; // bytes only: not decoded here
+    s.meshes[0].imageMimeType = "image/png";
+    s.meshes[0].alphaMode = AlphaMode::Mask;
+    s.meshes[0].alphaCutoff = 0.3f;
+    s.meshes[0].doubleSided = true;
+    s.meshes[0].emissive = {1.0f, 0.5f, 0.25f};
+    s.meshes[0].emissiveUsesImage = true;
+    // Mesh 1 (textured by file): blends, emits 3 x white through a second file.
+    s.meshes[1].alphaMode = AlphaMode::Blend;
+    s.meshes[1].emissive = glm::vec3(3.0f);
+    s.meshes[1].emissiveUri = "textures/glow.png";
+    const nlohmann::json j = nlohmann::json::parse(splitGlb(encodeGlb(s), "t.glb").json);
+    ASSERT_EQ(j["materials"].size(), 3u);
+    const auto& cut = j["materials"][0];
+    EXPECT_EQ(cut["alphaMode"], "MASK");
+    EXPECT_FLOAT_EQ(cut["alphaCutoff"].get<float>(), 0.3f);
+    EXPECT_EQ(cut["doubleSided"], true);
+    EXPECT_EQ(cut["emissiveFactor"], nlohmann::json::parse("[1,0.5,0.25]"));
+    // The base colour texture again: one texture, one image for both.
+    EXPECT_EQ(cut["emissiveTexture"]["index"],
+              cut["pbrMetallicRoughness"]["baseColorTexture"]["index"]);
+    const auto& glow = j["materials"][1];
+    EXPECT_EQ(glow["alphaMode"], "BLEND");
+    EXPECT_EQ(glow.count("doubleSided"), 0u); // false is the default
+    EXPECT_EQ(glow["emissiveFactor"], nlohmann::json::parse("[1,1,1]"));
+    EXPECT_EQ(glow["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"], 3);
+    const int glowTexture = glow["emissiveTexture"]["index"];
+    EXPECT_EQ(j["images"][j["textures"][glowTexture]["source"].get<int>()]["uri"],
+              "textures/glow.png");
+    EXPECT_EQ(j["extensionsUsed"], nlohmann::json::parse(R"(["KHR_materials_emissive_strength"])"));
+    EXPECT_EQ(j.count("extensionsRequired"), 0u); // an engine without it still draws
+    // Mesh 2 keeps the default look: no alphaMode, doubleSided or emissive written.
+    const auto& plain = j["materials"][2];
+    for (const char* absent : {"alphaMode", "doubleSided", "emissiveFactor", "emissiveTexture"})
+        EXPECT_EQ(plain.count(absent), 0u) << absent;
+}

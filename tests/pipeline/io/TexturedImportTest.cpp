@@ -37,10 +37,11 @@ std::string sgiOfRed(std::uint8_t r) {
 } // namespace
 
 TEST(Ac3dTextures, FirstTextureLineOfEachObjectIsKept) {
-    const auto objects = parseAc3dObjects(
-        acQuad("texture \"base.rgb\" base\ntexture \"lines.png\" tiled\n"
-               "texture empty_texture_no_mapping skids\n"));
-    ASSERT_TRUE(objects);
+    const auto file =
+        parseAc3dFile(acQuad("texture \"base.rgb\" base\ntexture \"lines.png\" tiled\n"
+                             "texture empty_texture_no_mapping skids\n"));
+    ASSERT_TRUE(file);
+    const auto* objects = &file->objects;
     ASSERT_EQ(objects->size(), 1u);
     ASSERT_EQ(objects->front().kids.size(), 1u);
     EXPECT_EQ(objects->front().kids[0].name, "quad");
@@ -95,8 +96,8 @@ TEST(TexturedImport, TorcsTrackDecodesEveryTextureItNames) {
     // The tree (arbor2_n.rgb) has a cut-out alpha channel.
     bool treeMasked = false;
     for (const Material& m : s.materials)
-        treeMasked |= m.alphaMode == AlphaMode::Mask &&
-                      m.baseColorTexture.filename() == "arbor2_n.rgb";
+        treeMasked |=
+            m.alphaMode == AlphaMode::Mask && m.baseColorTexture.filename() == "arbor2_n.rgb";
     EXPECT_TRUE(treeMasked);
 }
 
