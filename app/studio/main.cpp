@@ -172,18 +172,18 @@ bool parseOptions(QCoreApplication& app, Options& options) {
         QCoreApplication::translate("main", "HLOD preview: tint drawn nodes by tree depth."));
     const QCommandLineOption compare(
         QStringLiteral("compare"),
-        QCoreApplication::translate("main", "Compare two configurations side by side, e.g. "
+        QCoreApplication::translate("main", "Compare two branches side by side, e.g. "
                                             "sphere:aabb-k2 (also octree, original, current, "
-                                            "@S for the screen size)."),
+                                            "@S for the screen size; #N: Bake node N)."),
         QStringLiteral("LEFT:RIGHT"));
     parser.addOptions({screenshot, viewportOnly, size, orbit, build, mode, level, tint, compare});
     parser.process(app);
     if (!parseStartup(parser, build, mode, level, tint, options.startup)) return false;
     if (parser.isSet(compare)) {
-        std::pair<hlod::widgets::CompareConfig, hlod::widgets::CompareConfig> configs;
+        std::pair<hlod::widgets::CompareSide, hlod::widgets::CompareSide> sides;
         QString error;
-        if (!hlod::widgets::parseConfigPair(parser.value(compare), hlod::HlodSettings{}, configs,
-                                            &error))
+        if (!hlod::widgets::parseSidePair(parser.value(compare), hlod::widgets::CompareConfig{},
+                                          sides, &error))
             return usage(QStringLiteral("--compare: ") + error);
         options.compare = parser.value(compare);
     }
