@@ -40,13 +40,11 @@ public:
     // empty, a run is going on, or the parameters were refused.
     bool startExport();
     bool running() const { return running_; }
+    void reject() override; // Cancel: stops a running export first
 
 Q_SIGNALS:
     // The package was written to `folder`.
     void exported(const QString& folder, qint64 files, qint64 bytes);
-
-protected:
-    void reject() override; // Cancel: stops a running export first
 
 private:
     void browse();

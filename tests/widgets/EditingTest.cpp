@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QItemSelectionModel>
+#include <QGroupBox>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QThread>
@@ -99,7 +100,6 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
     session.newDocument({scene.toStdString()});
     EXPECT_FALSE(session.isDirty());
     EXPECT_EQ(session.displayName(), QStringLiteral("Untitled"));
-    Document& doc = session.document();
     ASSERT_TRUE(
         session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 3.0)));
     ASSERT_TRUE(session.undo()->execute(

@@ -7,6 +7,7 @@
 
 #include <QDoubleSpinBox>
 #include <QGraphicsRectItem>
+#include <QGroupBox>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
@@ -167,10 +168,11 @@ TEST_F(PipelineDock, DuplicateBranchPlacesACopyFreeOfOtherNodesAndKeepsTheZoom) 
     // The copies keep the originals' layout, one row down, and overlap no box.
     for (NodeId id : g.nodeIds()) {
         const QRectF a = editor.view()->nodeItem(id)->sceneBoundingRect();
-        for (NodeId other : g.nodeIds())
-            if (other != id)
-                EXPECT_FALSE(a.intersects(editor.view()->nodeItem(other)->sceneBoundingRect()))
-                    << id << " and " << other;
+        for (NodeId other : g.nodeIds()) {
+            if (other == id) continue;
+            EXPECT_FALSE(a.intersects(editor.view()->nodeItem(other)->sceneBoundingRect()))
+                << id << " and " << other;
+        }
     }
     EXPECT_EQ(g.node(6).x, g.node(3).x);
     EXPECT_GT(g.node(6).y, g.node(3).y);

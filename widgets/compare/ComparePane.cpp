@@ -43,6 +43,9 @@ ComparePane::ComparePane(const QString& title, QWidget* parent)
     : QWidget(parent), model_(std::make_unique<StudioModel>()) {
     title_ = new QLabel(QStringLiteral("<b>%1</b>").arg(title.toHtmlEscaped()));
     source_ = new QComboBox;
+    // One width whatever it lists, so both panes lay out alike (equal views, one frustum).
+    source_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    source_->setMinimumContentsLength(14);
     source_->setToolTip(tr("A Bake node of the document, or Custom: the values on the right over "
                            "the shown branch (built as a temporary branch, the document is not "
                            "changed)"));
@@ -60,9 +63,14 @@ ComparePane::ComparePane(const QString& title, QWidget* parent)
     use_->hide();
 
     auto* selector = new QHBoxLayout;
-    selector->addWidget(title_);
-    selector->addSpacing(8);
-    selector->addWidget(source_);
+    // Two rows: what the side shows, then its values; one row would be wider than half a
+    // window and make the two views unequal.
+    auto* source = new QHBoxLayout;
+    source->addWidget(title_);
+    source->addSpacing(8);
+    source->addWidget(source_);
+    source->addStretch(1);
+    source->addWidget(use_);
     selector->addWidget(new QLabel(tr("Volume")));
     selector->addWidget(volume_);
     selector->addWidget(new QLabel(tr("k")));
@@ -70,7 +78,6 @@ ComparePane::ComparePane(const QString& title, QWidget* parent)
     selector->addWidget(new QLabel(tr("Screen size")));
     selector->addWidget(screen_);
     selector->addStretch(1);
-    selector->addWidget(use_);
 
     status_ = new QLabel;
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -96,6 +103,7 @@ ComparePane::ComparePane(const QString& title, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(3);
+    layout->addLayout(source);
     layout->addLayout(selector);
     layout->addLayout(status);
     layout->addWidget(viewport_, 1);
