@@ -149,7 +149,8 @@ void ClusterEditActions::updateActions() {
     if (idle) {
         const ClusterTree& tree = *model_->built().build->tree;
         const Document& doc = session_->document();
-        const std::vector<InstanceSet>& locked = doc.graph().node(model_->shownCluster()).edits.locked;
+        const std::vector<InstanceSet>& locked =
+            doc.graph().node(model_->shownCluster()).edits.locked;
         for (Id node : nodes) {
             const ClusterNode& n = tree.nodes[node];
             root = root || node == tree.root;

@@ -26,8 +26,8 @@
 
 #include <QAbstractItemModel>
 
-#include "pipeline/graph/PipelineGraph.h"
 #include "pipeline/graph/HandEdits.h"
+#include "pipeline/graph/PipelineGraph.h"
 #include "pipeline/scene/Scene.h"
 #include "widgets/ClusterIdentity.h"
 

@@ -43,9 +43,9 @@ ExportDialog::ExportDialog(UndoAdapter& undo, StudioModel* model, NodeId exportN
     bar_->setObjectName(QStringLiteral("exportProgress"));
     bar_->setRange(0, 1000);
     bar_->setValue(0);
-    status_ = new QLabel(known ? tr("Branch: %1").arg(model_->branchLabel(
-                                     g.upstreamOfKind(node_, NodeKind::Bake)))
-                               : QString());
+    status_ = new QLabel(
+        known ? tr("Branch: %1").arg(model_->branchLabel(g.upstreamOfKind(node_, NodeKind::Bake)))
+              : QString());
     status_->setObjectName(QStringLiteral("exportStatus"));
     status_->setWordWrap(true);
 
@@ -155,9 +155,10 @@ void ExportDialog::onFinished() {
     const QString dir = QString::fromStdString(out->exported->output.string());
     bar_->setRange(0, 1000);
     bar_->setValue(1000);
-    status_->setText(tr("Wrote %1 files (%2) to %3")
-                         .arg(written.files)
-                         .arg(QLocale().formattedDataSize(static_cast<qint64>(written.bytes)), dir));
+    status_->setText(
+        tr("Wrote %1 files (%2) to %3")
+            .arg(written.files)
+            .arg(QLocale().formattedDataSize(static_cast<qint64>(written.bytes)), dir));
     Q_EMIT exported(dir, static_cast<qint64>(written.files), static_cast<qint64>(written.bytes));
     accept();
 }

@@ -148,9 +148,9 @@ void GraphRunner::run(Job* job, PipelineGraph copy, std::vector<NodeId> targets)
         for (NodeId n : targets) {
             if (copy.node(n).kind != NodeKind::Bake) continue;
             BuiltHlod b = withStatistics(n, copy.sharedOutput(n));
-            b.package = measurePackage(*b.scene, *b.build->tree, *b.build->bake,
-                                       b.build->bakeParams, {},
-                                       blockSizeAt(std::filesystem::temp_directory_path()), quiet);
+            b.package =
+                measurePackage(*b.scene, *b.build->tree, *b.build->bake, b.build->bakeParams, {},
+                               blockSizeAt(std::filesystem::temp_directory_path()), quiet);
             b.seconds = std::chrono::duration<double>(Clock::now() - start).count();
             bakes.push_back(std::move(b));
         }

@@ -149,12 +149,12 @@ void StatsPanel::refreshBranch() {
         return;
     }
     const NodeStatus status = g->status(shown);
-    const QString state = !model_->hasBuild()             ? tr("not built yet")
+    const QString state = !model_->hasBuild()              ? tr("not built yet")
                           : status == NodeStatus::UpToDate ? tr("up to date")
                           : status == NodeStatus::Running  ? tr("building; its last build shown")
                                                            : tr("changed since this build");
-    branch_->setText(tr("<b>Branch:</b> %1 (%2)")
-                         .arg(model_->branchLabel(shown).toHtmlEscaped(), state));
+    branch_->setText(
+        tr("<b>Branch:</b> %1 (%2)").arg(model_->branchLabel(shown).toHtmlEscaped(), state));
 }
 
 void StatsPanel::refresh() {

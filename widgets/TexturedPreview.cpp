@@ -87,7 +87,8 @@ TexturedPreview::~TexturedPreview() { clear(); }
 bool TexturedPreview::draws(const Scene& scene, const NodeOutput& build, Id n) {
     if (n >= build.tree->nodes.size()) return false;
     const ClusterNode& node = build.tree->nodes[n];
-    if (!node.isLeaf()) return n < build.bake->nodes.size() && build.bake->nodes[n].proxy.hasAtlas();
+    if (!node.isLeaf())
+        return n < build.bake->nodes.size() && build.bake->nodes[n].proxy.hasAtlas();
     if (node.instance >= scene.instances.size()) return false;
     const Mesh& mesh = scene.meshes[scene.instances[node.instance].mesh];
     return mesh.uvs.size() == mesh.positions.size() && !mesh.indices.empty() &&

@@ -62,24 +62,24 @@ std::string listExports(const PipelineGraph& graph) {
 
 NodeId findExport(const PipelineGraph& graph, const std::string& pick) {
     std::string digits = pick.starts_with('#') ? pick.substr(1) : pick;
-    const bool number = !digits.empty() && digits.size() < 10 &&
-                        std::all_of(digits.begin(), digits.end(), [](char c) {
-                            return c >= '0' && c <= '9';
-                        });
+    const bool number =
+        !digits.empty() && digits.size() < 10 &&
+        std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
     for (NodeId id : graph.nodeIds()) {
         const GraphNode& n = graph.node(id);
-        const bool named = (number && id == std::stoul(digits)) || (!n.name.empty() && n.name == pick);
+        const bool named =
+            (number && id == std::stoul(digits)) || (!n.name.empty() && n.name == pick);
         if (!named) continue;
         if (n.kind != NodeKind::Export) {
-            throw Error(ErrorCode::InvalidArgument,
-                        "--export " + pick + ": " + describeNode(n) + " is not an Export node (" +
-                            listExports(graph) + ")");
+            throw Error(ErrorCode::InvalidArgument, "--export " + pick + ": " + describeNode(n) +
+                                                        " is not an Export node (" +
+                                                        listExports(graph) + ")");
         }
         return id;
     }
     throw Error(ErrorCode::InvalidArgument,
-                "--export " + pick + " names no node of the project (its Export nodes: " +
-                    listExports(graph) + ")");
+                "--export " + pick +
+                    " names no node of the project (its Export nodes: " + listExports(graph) + ")");
 }
 
 } // namespace

@@ -100,7 +100,7 @@ int runBench(const CommandArgs& argv) {
     PipelineGraph graph;
     const NodeId import = graph.addNode(NodeKind::Import);
     graph.setSources(import, std::vector<std::filesystem::path>(args.positionals().begin(),
-                                                               args.positionals().end()));
+                                                                args.positionals().end()));
     for (const auto& [decl, value] : flags) {
         if (decl->node == NodeKind::Cluster) o.cluster[decl->key] = value;
         if (decl->node == NodeKind::Bake) o.bake[decl->key] = value;

@@ -1,9 +1,9 @@
 // `hlod plan SCENE... --shards N --cache DIR [import, cluster and bake flags] [--json]` and
-// `hlod plan PROJECT.hlodproj [--export ID|NAME] --shards N --cache DIR`: the first step of a distributed bake
-// (issue 21). Imports once, clusters, cuts the tree into N cost-balanced shards and writes the
-// plan into the shared cache folder (pipeline/graph/BakePlan.h): the tree, every shard's slice
-// of the scene and the bake parameters. Then `hlod build --shard I/N --cache DIR` on each
-// machine, and the final `hlod build SCENE... -o PKG --cache DIR` with the same flags.
+// `hlod plan PROJECT.hlodproj [--export ID|NAME] --shards N --cache DIR`: the first step of a
+// distributed bake (issue 21). Imports once, clusters, cuts the tree into N cost-balanced shards
+// and writes the plan into the shared cache folder (pipeline/graph/BakePlan.h): the tree, every
+// shard's slice of the scene and the bake parameters. Then `hlod build --shard I/N --cache DIR` on
+// each machine, and the final `hlod build SCENE... -o PKG --cache DIR` with the same flags.
 #include <cstdio>
 #include <iostream>
 

@@ -101,6 +101,7 @@ public:
     // Used with and without --screenshot.
     struct StartupView {
         bool build = false;
+        bool buildAll = false;       // every branch, not only the shown one
         std::optional<QString> mode; // "original", "clusters", "hlod"
         std::optional<int> level;
         bool tintByDepth = false;
@@ -223,9 +224,9 @@ private:
     QAction* exportAllAction_ = nullptr;
     QAction* buildAllAction_ = nullptr;
     hlod::widgets::PipelineEditor* pipeline_ = nullptr;
-    hlod::ImportOptions loadOptions_;  // what the running or last load was given
-    std::string loadedImport_;         // definition of the Import node the scene was loaded for
-    bool reloading_ = false;           // the running load reads the document's Import again
+    hlod::ImportOptions loadOptions_; // what the running or last load was given
+    std::string loadedImport_;        // definition of the Import node the scene was loaded for
+    bool reloading_ = false;          // the running load reads the document's Import again
     struct PendingProject {
         hlod::Document doc;
         QString path;

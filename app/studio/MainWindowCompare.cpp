@@ -69,9 +69,9 @@ void MainWindow::showCompare() {
     const bool fresh = compare_->scene() != scene();
     hlod::PipelineGraph* graph = &session_->document().graph();
     if (fresh)
-        compare_->open(scene(), graph, model_->shownBake(),
-                       hlod::widgets::defaultSides(*graph, model_->shownBake(),
-                                                   model_->bakeNodes()));
+        compare_->open(
+            scene(), graph, model_->shownBake(),
+            hlod::widgets::defaultSides(*graph, model_->shownBake(), model_->bakeNodes()));
     else
         compare_->documentChanged(); // rebuilds the sides it changes
     if (!fresh && !compare_->allBuilt() && !compare_->building())
@@ -95,8 +95,8 @@ void MainWindow::onCompareSceneChanged() {
     // The same two sides where the new document has them (a Bake node that is gone becomes its
     // configuration over the shown branch).
     auto keep = [graph](hlod::widgets::CompareSide side) {
-        if (side.bake != hlod::kNoNode && (!graph->hasNode(side.bake) ||
-                                           graph->node(side.bake).kind != hlod::NodeKind::Bake))
+        if (side.bake != hlod::kNoNode &&
+            (!graph->hasNode(side.bake) || graph->node(side.bake).kind != hlod::NodeKind::Bake))
             side.bake = hlod::kNoNode;
         return side;
     };
@@ -124,8 +124,7 @@ void MainWindow::openStartupCompare() {
         compareSpec_, hlod::widgets::configOf(*graph, model_->shownBake()), sides, &error);
     for (hlod::widgets::CompareSide* side : {&sides.first, &sides.second}) {
         if (!ok || side->bake == hlod::kNoNode) continue;
-        if (!graph->hasNode(side->bake) ||
-            graph->node(side->bake).kind != hlod::NodeKind::Bake) {
+        if (!graph->hasNode(side->bake) || graph->node(side->bake).kind != hlod::NodeKind::Bake) {
             error = tr("--compare: the document has no Bake node #%1").arg(side->bake);
             ok = false;
         }

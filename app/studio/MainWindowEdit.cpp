@@ -67,8 +67,8 @@ void MainWindow::createEditDocks() {
     if (auto* logDock = findChild<QDockWidget*>(QStringLiteral("LogDock")))
         tabifyDockWidget(pipelineDock, logDock);
     pipelineDock->raise();
-    // Two branches (Import and two rows of Cluster -> Bake -> Export) at 1:1.
-    resizeDocks({pipelineDock}, {270}, Qt::Vertical);
+    // Two branches (Import and two rows of Cluster -> Bake -> Export) without scrolling.
+    resizeDocks({pipelineDock}, {290}, Qt::Vertical);
     pipeline_ = pipeline;
     connect(pipeline, &hlod::widgets::PipelineEditor::nodeSelected, this,
             [this, paramsDock](quint32 node) {
@@ -108,9 +108,13 @@ void MainWindow::createEditMenu() {
 }
 
 void MainWindow::onDocumentReplaced() {
-    // The branch the project was saved showing, else the first one.
+    // The branch the project was saved showing, else the one shown (a save under a new name
+    // replaces nothing), else the first one.
     const std::vector<hlod::NodeId> bakes = model_->bakeNodes();
-    hlod::NodeId shown = bakes.empty() ? hlod::kNoNode : bakes.front();
+    const bool known = std::find(bakes.begin(), bakes.end(), model_->shownBake()) != bakes.end();
+    hlod::NodeId shown = known           ? model_->shownBake()
+                         : bakes.empty() ? hlod::kNoNode
+                                         : bakes.front();
     const nlohmann::json& state = session_->document().viewState();
     if (const auto display = state.find("display");
         display != state.end() && display->is_object() && display->contains("bake")) {

@@ -98,9 +98,9 @@ void MainWindow::createBuildMenu() {
         buildAction_->setEnabled(idle && model_->shownBake() != hlod::kNoNode);
         buildAllAction_->setEnabled(idle && !model_->bakeNodes().empty());
     };
-    for (auto signal : {&StudioModel::sceneChanged, &StudioModel::buildStarted,
-                        &StudioModel::runFinished, &StudioModel::buildCancelled,
-                        &StudioModel::shownBakeChanged})
+    for (auto signal :
+         {&StudioModel::sceneChanged, &StudioModel::buildStarted, &StudioModel::runFinished,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, updateBuild);
     connect(session_, &hlod::widgets::ProjectSession::documentChanged, this, updateBuild);
     connect(model_, &StudioModel::buildFailed, this, updateBuild);
@@ -135,8 +135,9 @@ void MainWindow::onBuildStarted() {
     for (hlod::NodeId id : model_->runTargets()) {
         const hlod::PipelineGraph& g = session_->document().graph();
         const hlod::NodeKind kind = g.node(id).kind;
-        targets << (kind == hlod::NodeKind::Bake ? model_->branchLabel(id)
-                                                  : QString::fromStdString(describeNode(g.node(id))));
+        targets << (kind == hlod::NodeKind::Bake
+                        ? model_->branchLabel(id)
+                        : QString::fromStdString(describeNode(g.node(id))));
     }
     log_->info(tr("Running %1").arg(targets.join(QStringLiteral(", "))));
 }
@@ -176,17 +177,17 @@ void MainWindow::onBuildFinished() {
     if (model_->hasBuild()) {
         const hlod::widgets::BuiltHlod& built = model_->built();
         const QLocale locale;
-        log_->info(tr("%1: %2 nodes, height %3, %4 proxy triangles (cluster %5 s, bake %6 s: %7 "
-                      "baked, %8 reused)")
-                       .arg(model_->branchLabel(built.bakeNode))
-                       .arg(built.build->tree->nodes.size())
-                       .arg(built.build->tree->height())
-                       .arg(locale.toString(
-                           static_cast<qulonglong>(built.build->bake->proxyTriangles)))
-                       .arg(locale.toString(built.build->clusterSeconds, 'f', 2))
-                       .arg(locale.toString(built.build->bake->seconds, 'f', 2))
-                       .arg(built.build->bake->baked)
-                       .arg(built.build->bake->reused));
+        log_->info(
+            tr("%1: %2 nodes, height %3, %4 proxy triangles (cluster %5 s, bake %6 s: %7 "
+               "baked, %8 reused)")
+                .arg(model_->branchLabel(built.bakeNode))
+                .arg(built.build->tree->nodes.size())
+                .arg(built.build->tree->height())
+                .arg(locale.toString(static_cast<qulonglong>(built.build->bake->proxyTriangles)))
+                .arg(locale.toString(built.build->clusterSeconds, 'f', 2))
+                .arg(locale.toString(built.build->bake->seconds, 'f', 2))
+                .arg(built.build->bake->baked)
+                .arg(built.build->bake->reused));
     }
     if (startupPending_) applyStartupView();
 }
@@ -216,10 +217,15 @@ void MainWindow::onBuildCancelled() {
 
 void MainWindow::setStartupView(const StartupView& view) {
     startup_ = view;
-    startupPending_ = view.build || view.mode || view.level || view.tintByDepth;
+    startupPending_ = view.build || view.buildAll || view.mode || view.level || view.tintByDepth;
 }
 
 void MainWindow::applyStartupView() {
+    if (startup_.buildAll && !model_->bakeNodes().empty()) {
+        startup_.buildAll = false; // once: onBuildFinished comes back here
+        model_->buildAll();
+        return;
+    }
     if (startup_.build && !model_->hasBuild() && model_->shownBake() != hlod::kNoNode) {
         model_->build();
         return; // onBuildFinished comes back here

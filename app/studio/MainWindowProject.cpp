@@ -18,12 +18,12 @@
 
 #include "pipeline/doc/ProjectFile.h"
 #include "pipeline/graph/Parameters.h"
-#include "widgets/graph/PipelineEditor.h"
 #include "widgets/ExportDialog.h"
 #include "widgets/LogView.h"
 #include "widgets/SceneLoader.h"
 #include "widgets/StudioModel.h"
 #include "widgets/doc/ProjectSession.h"
+#include "widgets/graph/PipelineEditor.h"
 
 using hlod::widgets::ProjectSession;
 
@@ -65,9 +65,9 @@ void MainWindow::addProjectActions(QMenu* file) {
             idle && !session_->document().graph().nodesOf(hlod::NodeKind::Export).empty());
     };
     using hlod::widgets::StudioModel;
-    for (auto signal : {&StudioModel::runFinished, &StudioModel::sceneChanged,
-                        &StudioModel::buildStarted, &StudioModel::buildCancelled,
-                        &StudioModel::shownBakeChanged})
+    for (auto signal :
+         {&StudioModel::runFinished, &StudioModel::sceneChanged, &StudioModel::buildStarted,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, updateExport);
     connect(model_, &StudioModel::buildFailed, this, updateExport);
     connect(session_, &ProjectSession::documentChanged, this, updateExport);
@@ -235,10 +235,10 @@ void MainWindow::exportDialog() {
         if (!pipeline_->addAfter(hlod::NodeKind::Export, bake)) return;
         exportNode = next;
     }
-    QString folder = session_->projectPath().isEmpty()
-                         ? QDir::home().filePath(QStringLiteral("hlod-package"))
-                         : QFileInfo(session_->projectPath()).absolutePath() +
-                               QStringLiteral("/package");
+    QString folder =
+        session_->projectPath().isEmpty()
+            ? QDir::home().filePath(QStringLiteral("hlod-package"))
+            : QFileInfo(session_->projectPath()).absolutePath() + QStringLiteral("/package");
     if (g.nodesOf(hlod::NodeKind::Export).size() > 1)
         folder += QStringLiteral("-%1").arg(exportNode); // every branch its own folder
     hlod::widgets::ExportDialog dialog(*session_->undo(), model_, exportNode, folder, this);

@@ -113,7 +113,8 @@ void AddNode::revert(Document& doc) {
 }
 
 nlohmann::json AddNode::toJson() const {
-    nlohmann::json j = {{"command", "add_node"}, {"kind", toString(node_.kind)}, {"node", node_.id}};
+    nlohmann::json j = {
+        {"command", "add_node"}, {"kind", toString(node_.kind)}, {"node", node_.id}};
     if (input_ != kNoNode) j["input"] = input_;
     return j;
 }

@@ -202,7 +202,9 @@ class HandEditCommand : public Command {
 public:
     explicit HandEditCommand(NodeId clusterNode) : node_(clusterNode) {}
     // "Merge clusters (Cluster #2)": what() and the node.
-    std::string text() const override { return what() + " (Cluster #" + std::to_string(node_) + ")"; }
+    std::string text() const override {
+        return what() + " (Cluster #" + std::to_string(node_) + ")";
+    }
     void apply(Document& doc) override;
     void revert(Document& doc) override;
     nlohmann::json toJson() const override;

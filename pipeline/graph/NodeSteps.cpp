@@ -61,8 +61,8 @@ NodeOutput runBake(const GraphNode& node, const NodeOutput& in, const Progress& 
     validate(out.bakeParams.screen);
     // The proxy economy dissolves nodes: the tree downstream is the one the proxies belong to.
     auto tree = std::make_shared<ClusterTree>(*in.tree);
-    out.bake =
-        std::make_shared<const BakeResult>(bakeEconomised(*in.scene, *tree, out.bakeParams, progress));
+    out.bake = std::make_shared<const BakeResult>(
+        bakeEconomised(*in.scene, *tree, out.bakeParams, progress));
     out.tree = std::move(tree);
     out.exported.reset();
     return out;

@@ -321,8 +321,7 @@ void PipelineGraph::setStatusListener(std::function<void(NodeId, NodeStatus)> li
     listener_ = std::move(listener);
 }
 
-void PipelineGraph::setProgressListener(
-    std::function<void(NodeId, const ProgressInfo&)> listener) {
+void PipelineGraph::setProgressListener(std::function<void(NodeId, const ProgressInfo&)> listener) {
     progressListener_ = std::move(listener);
 }
 

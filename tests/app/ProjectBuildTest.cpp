@@ -179,9 +179,8 @@ TEST(ProjectBuild, EveryBranchBuildsThePackageASingleBranchBuildWrites) {
     const fs::path project = tmp.path / "two.hlodproj";
     hlod::saveProject(doc, project);
     const std::string cache = (tmp.path / "cache").string();
-    const auto r = runCli({"build", project.string(), "--no-dlod", "--cache", cache, "--threads",
-                           "2"},
-                          600);
+    const auto r =
+        runCli({"build", project.string(), "--no-dlod", "--cache", cache, "--threads", "2"}, 600);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // One table per branch, each named by its chain.
     EXPECT_NE(r.out.find("branch:       Import #1 -> Cluster #2 -> Bake #3 -> Export #4 'a'"),
@@ -201,9 +200,9 @@ TEST(ProjectBuild, EveryBranchBuildsThePackageASingleBranchBuildWrites) {
     auto single = [&](const std::string& out, std::vector<std::string> flags) {
         std::vector<std::string> args{"build"};
         args.insert(args.end(), scene.begin(), scene.end());
-        for (const std::string& f : {std::string("-o"), out, std::string("--no-dlod"),
-                                     std::string("--cache"), cache, std::string("--threads"),
-                                     std::string("2")})
+        for (const std::string& f :
+             {std::string("-o"), out, std::string("--no-dlod"), std::string("--cache"), cache,
+              std::string("--threads"), std::string("2")})
             args.push_back(f);
         args.insert(args.end(), flags.begin(), flags.end());
         return runCli(args, 600);
@@ -219,9 +218,9 @@ TEST(ProjectBuild, EveryBranchBuildsThePackageASingleBranchBuildWrites) {
     EXPECT_EQ(hlod::test::fileBytes(tmp.path / "pkg-b" / "tileset.json"),
               hlod::test::fileBytes(fs::path(b) / "tileset.json"));
     // The branches differ: another volume and screen size make other tiles.
-    EXPECT_NE(hlod::test::folderDifference(tmp.path / "pkg-a" / "tiles",
-                                           tmp.path / "pkg-b" / "tiles"),
-              "");
+    EXPECT_NE(
+        hlod::test::folderDifference(tmp.path / "pkg-a" / "tiles", tmp.path / "pkg-b" / "tiles"),
+        "");
 }
 
 TEST(ProjectBuild, ExportPicksABranchAndAGraphThatCannotRunIsRefusedNamingTheNode) {
@@ -257,9 +256,9 @@ TEST(ProjectBuild, ExportPicksABranchAndAGraphThatCannotRunIsRefusedNamingTheNod
     hlod::saveProject(doc, project);
     const auto same = runCli({"build", project.string(), "--no-dlod", "--no-cache"});
     EXPECT_EQ(same.exitCode, 2);
-    EXPECT_EQ(same.err, "hlod build: error: Export #7 'b' writes the same folder as Export #4 'a' (" +
-                            (tmp.path / "pkg-a").string() +
-                            "): give one of them another output folder\n");
+    EXPECT_EQ(same.err,
+              "hlod build: error: Export #7 'b' writes the same folder as Export #4 'a' (" +
+                  (tmp.path / "pkg-a").string() + "): give one of them another output folder\n");
     EXPECT_FALSE(fs::exists(tmp.path / "pkg-a"));
     // A Bake node without a Cluster node upstream.
     doc.execute(std::make_unique<hlod::SetParameter>(7, "output", (tmp.path / "pkg-b").string()));
@@ -282,4 +281,3 @@ TEST(ProjectBuild, BenchTakesTheBuildFlagsWithTheirDeclaredRanges) {
     const auto fov = runCli({"bench", "--out", "/tmp/x", "--screen-size", "0"});
     EXPECT_EQ(fov.err, "hlod bench: error: --screen-size must be within [1, 100000], got 0\n");
 }
-

@@ -23,6 +23,7 @@
 #include "TestBuilds.h"
 #include "TestScenes.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/doc/Commands.h"
 #include "pipeline/graph/Parameters.h"
 #include "widgets/DisplayController.h"
 #include "widgets/GlSupport.h"
@@ -33,7 +34,6 @@
 #include "widgets/compare/ComparePane.h"
 #include "widgets/compare/CompareTable.h"
 #include "widgets/compare/CompareView.h"
-#include "pipeline/doc/Commands.h"
 #include "widgets/compare/UseConfiguration.h"
 #include "widgets/doc/ProjectSession.h"
 
@@ -75,9 +75,9 @@ protected:
 
     // The document's Bake #3 (sphere, left) against AABB k=2 over it (right), both building.
     void openBoth() {
-        view->open(test::sampleBuild().scene, &graph(), kDefaultBake,
-                   {{kDefaultBake, config(VolumeType::Sphere)},
-                    {kNoNode, config(VolumeType::Aabb, 2.0)}});
+        view->open(
+            test::sampleBuild().scene, &graph(), kDefaultBake,
+            {{kDefaultBake, config(VolumeType::Sphere)}, {kNoNode, config(VolumeType::Aabb, 2.0)}});
     }
     // openBoth() and waits for both sides.
     void openSample() {
@@ -281,8 +281,8 @@ TEST_F(CompareViewTest, DocumentChangesRebuildOnlyTheSidesTheyReach) {
     EXPECT_EQ(view->left()->config().volume, VolumeType::Octree);
     ASSERT_TRUE(waitUntilIdle(*view->left()));
     // Max children is shared: both sides rebuild.
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "max_children", 4)));
+    ASSERT_TRUE(session.undo()->execute(
+        std::make_unique<SetParameter>(kDefaultCluster, "max_children", 4)));
     view->documentChanged();
     EXPECT_TRUE(view->left()->building());
     EXPECT_TRUE(view->right()->building());
@@ -295,8 +295,8 @@ TEST_F(CompareViewTest, TwoBakeNodesOfTheDocumentCompareSideBySide) {
     ASSERT_TRUE(session.undo()->execute(std::make_unique<DuplicateNodes>(
         DuplicateNodes::branchFrom(graph(), kDefaultCluster),
         std::vector<std::pair<double, double>>{{0, 200}, {200, 200}, {400, 200}}, true)));
-    ASSERT_TRUE(session.undo()->execute(
-        std::make_unique<SetParameter>(5, "volume", std::string("aabb"))));
+    ASSERT_TRUE(
+        session.undo()->execute(std::make_unique<SetParameter>(5, "volume", std::string("aabb"))));
     ASSERT_TRUE(session.undo()->execute(std::make_unique<SetParameter>(5, "k", 2.0)));
     const auto sides = defaultSides(graph(), kDefaultBake, {kDefaultBake, 6});
     EXPECT_EQ(sides.second.bake, 6u); // the other branch, not a configuration
@@ -375,7 +375,7 @@ TEST(CompareConfig, TextFormsParseOverTheBaseBranch) {
     EXPECT_EQ(c.config, base);
     ASSERT_TRUE(parseSide(configSpec(config(VolumeType::Aabb, 1.5, 312.5)), base, c));
     EXPECT_EQ(c.config, config(VolumeType::Aabb, 1.5, 312.5)); // configSpec round-trips
-    ASSERT_TRUE(parseSide(QStringLiteral("#6"), base, c)); // a Bake node of the document
+    ASSERT_TRUE(parseSide(QStringLiteral("#6"), base, c));     // a Bake node of the document
     EXPECT_EQ(c.bake, 6u);
     QString error;
     EXPECT_FALSE(parseSide(QStringLiteral("sphere-k2"), base, c, &error));

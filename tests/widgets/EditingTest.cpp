@@ -9,8 +9,8 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
-#include <QItemSelectionModel>
 #include <QGroupBox>
+#include <QItemSelectionModel>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QThread>
@@ -100,8 +100,7 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
     session.newDocument({scene.toStdString()});
     EXPECT_FALSE(session.isDirty());
     EXPECT_EQ(session.displayName(), QStringLiteral("Untitled"));
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 3.0)));
+    ASSERT_TRUE(session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 3.0)));
     ASSERT_TRUE(session.undo()->execute(
         std::make_unique<SetParameter>(kDefaultBake, "screen_size", 120.0)));
     EXPECT_TRUE(session.isDirty());
@@ -127,8 +126,7 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
 
     // An edit after the save: dirty, autosaved, recoverable; the plain project keeps k = 3.
     QThread::msleep(20); // the autosave must be strictly newer than the project
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 5.0)));
+    ASSERT_TRUE(session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 5.0)));
     EXPECT_TRUE(session.shouldPromptOnClose());
     ASSERT_TRUE(session.autosave());
     EXPECT_TRUE(ProjectSession::hasNewerAutosave(path));

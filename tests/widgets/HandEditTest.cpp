@@ -130,8 +130,8 @@ TEST_F(HandEdit, SplitHangsTheChildrenFromTheParentAndUndoRestores) {
     // root may have a dissolved parent there, which takes the children and may then pay for
     // its own proxy (the sample's {43, 45} sits in a 12-mesh cluster that only reappears once
     // {43, 45} is split). What is tested here is the split itself, on a tree shown as clustered.
-    ASSERT_TRUE(session.undo()->execute(
-        std::make_unique<SetParameter>(kDefaultBake, "proxy_ratio", 1.0)));
+    ASSERT_TRUE(
+        session.undo()->execute(std::make_unique<SetParameter>(kDefaultBake, "proxy_ratio", 1.0)));
     ASSERT_TRUE(test::waitForBuild(model));
     ASSERT_EQ(model.built().build->bake->dissolved, 0u);
     const std::vector<Id> inner = innerChildrenOfRoot();

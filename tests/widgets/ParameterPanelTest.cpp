@@ -26,7 +26,7 @@ TEST(ParameterPanel, EditorsFollowTheDeclarations) {
     EXPECT_EQ(proxy->currentText(), QStringLiteral("decimate"));
     auto* size = panel.findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
     ASSERT_NE(size, nullptr);
-    EXPECT_EQ(size->value(), 300.0); // DESIGN.md default S
+    EXPECT_EQ(size->value(), 300.0); // the thesis' S, the declared default
     EXPECT_EQ(size->minimum(), 1.0);
     EXPECT_EQ(size->maximum(), 100000.0);
     EXPECT_EQ(size->suffix(), QStringLiteral(" px"));

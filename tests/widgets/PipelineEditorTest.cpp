@@ -73,7 +73,8 @@ TEST_F(PipelineDock, SelectingTheClusterNodeShowsKAndEditingItRebuilds) {
     QSignalSpy scheduled(&rebuild, &AutoRebuild::rebuildScheduled);
     k->setValue(2.0);
     EXPECT_EQ(session.document().history().count(), steps + 1); // one undo step
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Proportion k of Cluster #2"));
+    EXPECT_EQ(session.undo()->stack()->undoText(),
+              QStringLiteral("Set Proportion k of Cluster #2"));
     EXPECT_EQ(scheduled.count(), 1);
     EXPECT_EQ(status(kDefaultCluster), NodeStatus::Pending); // the edit reached it
     EXPECT_EQ(status(kDefaultBake), NodeStatus::Pending);

@@ -49,8 +49,9 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     PipelineGraph graph = test::testGraph(scene);
     runGraph(model, graph, scene);
     std::vector<std::pair<quint32, NodeStatus>> statuses;
-    QObject::connect(&model, &StudioModel::nodeStatusChanged,
-                     [&](quint32 node) { statuses.push_back({node, graph.status(node)}); });
+    QObject::connect(&model, &StudioModel::nodeStatusChanged, [&](quint32 node) {
+        statuses.push_back({node, graph.status(node)});
+    });
     QSignalSpy finished(&model, &StudioModel::buildFinished);
     QSignalSpy progress(&model, &StudioModel::buildProgress);
     // The event loop keeps running while the worker bakes: a timer on the GUI thread ticks.
@@ -67,11 +68,11 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     ASSERT_TRUE(model.hasBuild());
     // The run's statuses came into the graph as they happened: Cluster then Bake ran (the Import
     // node held the scene already), each running, then up to date.
-    EXPECT_EQ(statuses, (std::vector<std::pair<quint32, NodeStatus>>{
-                            {kDefaultCluster, NodeStatus::Running},
-                            {kDefaultCluster, NodeStatus::UpToDate},
-                            {kDefaultBake, NodeStatus::Running},
-                            {kDefaultBake, NodeStatus::UpToDate}}));
+    EXPECT_EQ(statuses,
+              (std::vector<std::pair<quint32, NodeStatus>>{{kDefaultCluster, NodeStatus::Running},
+                                                           {kDefaultCluster, NodeStatus::UpToDate},
+                                                           {kDefaultBake, NodeStatus::Running},
+                                                           {kDefaultBake, NodeStatus::UpToDate}}));
     EXPECT_EQ(graph.status(kDefaultExport), NodeStatus::Pending); // not asked for
 
     const BuiltHlod& built = model.built();

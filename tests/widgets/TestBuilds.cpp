@@ -106,8 +106,7 @@ bool showSampleBuild(ProjectSession& session, StudioModel& model) {
     // The sample's build is this document's: its Cluster and Bake nodes are up to date with it.
     graph.adopt(kDefaultCluster, graph.definition(kDefaultCluster), NodeStatus::UpToDate,
                 sampleRun().cluster);
-    graph.adopt(kDefaultBake, graph.definition(kDefaultBake), NodeStatus::UpToDate,
-                sample.build);
+    graph.adopt(kDefaultBake, graph.definition(kDefaultBake), NodeStatus::UpToDate, sample.build);
     model.setGraph(&graph);
     model.setScene(sample.scene);
     model.setShownBake(kDefaultBake);

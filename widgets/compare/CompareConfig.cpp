@@ -71,8 +71,7 @@ QString configSpec(const CompareConfig& config) {
     return spec + QLatin1Char('@') + number(config.screenSize);
 }
 
-bool parseSide(const QString& text, const CompareConfig& base, CompareSide& out,
-               QString* error) {
+bool parseSide(const QString& text, const CompareConfig& base, CompareSide& out, QString* error) {
     static const QRegularExpression node(QStringLiteral(R"(^#([0-9]{1,9})$)"));
     if (const QRegularExpressionMatch m = node.match(text.trimmed()); m.hasMatch()) {
         out = {static_cast<NodeId>(m.captured(1).toUInt()), base};

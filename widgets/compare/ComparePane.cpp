@@ -185,7 +185,8 @@ void ComparePane::fillSources() {
         }
     }
     source_->addItem(tr("Custom"), QVariant::fromValue<quint32>(kNoNode));
-    source_->setCurrentIndex(std::max(0, source_->findData(QVariant::fromValue<quint32>(side_.bake))));
+    source_->setCurrentIndex(
+        std::max(0, source_->findData(QVariant::fromValue<quint32>(side_.bake))));
     writing_ = false;
 }
 
@@ -212,8 +213,8 @@ QString ComparePane::label(bool withScreenSize) const {
         return tr("%1: %2").arg(QString::fromStdString(describeNode(document_->node(side_.bake))),
                                 config);
     if (document_ && document_->hasNode(base_))
-        return tr("%1 (over %2)").arg(config, QString::fromStdString(
-                                                  nodeLabel(document_->node(base_))));
+        return tr("%1 (over %2)")
+            .arg(config, QString::fromStdString(nodeLabel(document_->node(base_))));
     return config;
 }
 

@@ -115,7 +115,7 @@ private:
     PipelineGraph* document_ = nullptr;
     NodeId base_ = kNoNode;
     CompareSide side_;
-    PipelineGraph temp_;         // a Custom side's copy of the document with its branch
+    PipelineGraph temp_;          // a Custom side's copy of the document with its branch
     std::string builtDefinition_; // of what the last rebuild() ran
     bool useWanted_ = false;
     State state_ = State::Empty;

@@ -106,8 +106,8 @@ CompareView::~CompareView() {
     link_ = nullptr;
 }
 
-void CompareView::open(std::shared_ptr<const Scene> scene, PipelineGraph* document,
-                       NodeId baseBake, const std::pair<CompareSide, CompareSide>& sides) {
+void CompareView::open(std::shared_ptr<const Scene> scene, PipelineGraph* document, NodeId baseBake,
+                       const std::pair<CompareSide, CompareSide>& sides) {
     upAxis_ = scene ? suggestedUpAxis(*scene) : 1;
     for (ComparePane* pane : {left_, right_}) {
         pane->setScene(scene, upAxis_);

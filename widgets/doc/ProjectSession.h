@@ -1,5 +1,5 @@
 // The editor's open project: one hlod::Document (parameters, sources, hand edits, view state;
-// the single source of truth, DESIGN.md "Undo belongs to the document"), its UndoAdapter, the
+// the single source of truth, docs/architecture.md, "Undo"), its UndoAdapter, the
 // `.hlodproj` path it was opened from or saved to, and the autosave (ProjectFile.h).
 //
 // Dirty: the document differs from the saved file: the undo stack is not at its clean index, or

@@ -21,6 +21,7 @@
 #include <QPainterPathStroker>
 #include <QPen>
 #include <QScrollBar>
+#include <QStyleOptionGraphicsItem>
 #include <QWheelEvent>
 
 namespace hlod::widgets {
@@ -93,10 +94,9 @@ QString summary(const GraphNode& n) {
     case NodeKind::Import: {
         if (n.sources.empty()) return NodeGraphView::tr("sample scene");
         const QString first = QFileInfo(QString::fromStdString(n.sources[0].string())).fileName();
-        return n.sources.size() == 1 ? first
-                                     : NodeGraphView::tr("%1 + %2 more")
-                                           .arg(first)
-                                           .arg(n.sources.size() - 1);
+        return n.sources.size() == 1
+                   ? first
+                   : NodeGraphView::tr("%1 + %2 more").arg(first).arg(n.sources.size() - 1);
     }
     case NodeKind::Cluster: {
         const QString volume = QString::fromStdString(paramText(p, "volume"));
@@ -119,6 +119,19 @@ QString summary(const GraphNode& n) {
     }
     return {};
 }
+
+// A node's box: the selection is shown by its outline (setStatusOnly), not by the style's dashed
+// frame, which would hide the outline of the shown node.
+class NodeBox : public QGraphicsRectItem {
+public:
+    using QGraphicsRectItem::QGraphicsRectItem;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option,
+               QWidget* widget) override {
+        QStyleOptionGraphicsItem plain(*option);
+        plain.state &= ~QStyle::State_Selected;
+        QGraphicsRectItem::paint(painter, &plain, widget);
+    }
+};
 
 } // namespace
 
@@ -208,7 +221,7 @@ void NodeGraphView::setZoom(double scale) {
 
 void NodeGraphView::fitGraph() {
     if (items_.empty()) return;
-    const QRectF rect = scene()->itemsBoundingRect().adjusted(-24, -24, 24, 24);
+    const QRectF rect = scene()->itemsBoundingRect().adjusted(-12, -12, 12, 12);
     setSceneRect(rect);
     const QSize room = viewport()->size();
     const double fit = std::min(room.width() / rect.width(), room.height() / rect.height());
@@ -220,6 +233,7 @@ void NodeGraphView::selectNode(NodeId node) {
     selected_ = items_.count(node) ? node : kNoNode;
     scene()->clearSelection();
     if (selected_ != kNoNode) items_[selected_].box->setSelected(true);
+    setStatusOnly();
 }
 
 void NodeGraphView::setShownNode(NodeId node) {
@@ -252,8 +266,10 @@ Connection NodeGraphView::connectionAt(const QPointF& p) const {
 
 void NodeGraphView::addNodeItem(const GraphNode& n) {
     const QSizeF size = boxSize(n.kind);
-    auto* box = scene()->addRect(0, 0, size.width(), size.height(), QPen(QColor(60, 60, 60)),
-                                 QBrush(QColor(248, 248, 248)));
+    auto* box = new NodeBox(0, 0, size.width(), size.height());
+    box->setPen(QPen(QColor(60, 60, 60)));
+    box->setBrush(QColor(248, 248, 248));
+    scene()->addItem(box);
     box->setPos(n.x, n.y);
     box->setData(kNodeIdRole, n.id);
     box->setFlag(QGraphicsItem::ItemIsSelectable);
@@ -329,7 +345,10 @@ void NodeGraphView::setStatusOnly() {
         if (!graph_->hasNode(id)) continue;
         const NodeStatus s = shownStatus(id);
         it.header->setBrush(statusColor(s));
-        it.box->setPen(id == shown_ ? QPen(highlight, 3.5) : QPen(QColor(60, 60, 60), 1.0));
+        // The shown node in the highlight colour, the selected one in black, both thick.
+        it.box->setPen(id == shown_      ? QPen(highlight, 3.5)
+                       : id == selected_ ? QPen(QColor(20, 20, 20), 2.5)
+                                         : QPen(QColor(60, 60, 60), 1.0));
         QString text = statusName(s);
         QString tip = text;
         double fraction = 0.0;
@@ -450,13 +469,13 @@ void NodeGraphView::fillNodeMenu(QMenu& menu, NodeId id) {
                                      [this, id] { Q_EMIT duplicateRequested(id, true); });
     branch->setToolTip(tr("Copy this node and everything downstream of it: a second variant fed "
                           "by the same input"));
-    QAction* disconnect = menu.addAction(tr("&Disconnect"), this,
-                                         [this, id] { Q_EMIT disconnectNodeRequested(id); });
+    QAction* disconnect =
+        menu.addAction(tr("&Disconnect"), this, [this, id] { Q_EMIT disconnectNodeRequested(id); });
     disconnect->setEnabled(!graph_->connectionsOf(id).empty());
     menu.addAction(tr("&Rename…"), this, [this, id] { Q_EMIT renameRequested(id); });
     menu.addSeparator();
-    QAction* remove =
-        menu.addAction(tr("&Remove %1").arg(name), this, [this, id] { Q_EMIT removeRequested(id); });
+    QAction* remove = menu.addAction(tr("&Remove %1").arg(name), this,
+                                     [this, id] { Q_EMIT removeRequested(id); });
     remove->setShortcut(QKeySequence::Delete);
 }
 
@@ -482,6 +501,20 @@ void NodeGraphView::contextMenuEvent(QContextMenuEvent* event) {
             ->setShortcut(QKeySequence(Qt::Key_F));
     }
     menu.exec(event->globalPos());
+}
+
+bool NodeGraphView::event(QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const bool own = key->modifiers() == Qt::NoModifier &&
+                         (key->key() == Qt::Key_F || key->key() == Qt::Key_Delete ||
+                          key->key() == Qt::Key_Backspace);
+        if (own) {
+            event->accept();
+            return true;
+        }
+    }
+    return QGraphicsView::event(event);
 }
 
 void NodeGraphView::keyPressEvent(QKeyEvent* event) {

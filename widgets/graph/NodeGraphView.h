@@ -102,6 +102,9 @@ Q_SIGNALS:
     void addRequested(int kind, double x, double y);
 
 protected:
+    // F and Delete are the view's own keys while it has the focus (the main window's View ▸ Fit
+    // View takes F elsewhere).
+    bool event(QEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;

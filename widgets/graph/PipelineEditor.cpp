@@ -22,14 +22,12 @@ namespace hlod::widgets {
 
 namespace {
 
-constexpr double kGap = 40.0;  // between boxes, both ways
+constexpr double kGap = 30.0;  // between boxes, both ways
 constexpr double kSnap = 10.0; // positions are kept on a 10-unit grid
 
 double snap(double v) { return std::round(v / kSnap) * kSnap; }
 
-QRectF boxAt(NodeKind kind, QPointF topLeft) {
-    return {topLeft, NodeGraphView::boxSize(kind)};
-}
+QRectF boxAt(NodeKind kind, QPointF topLeft) { return {topLeft, NodeGraphView::boxSize(kind)}; }
 
 // Whether a box of `kind` at `topLeft` keeps kGap from every node of `g` but `ignore`.
 bool isFree(const PipelineGraph& g, NodeKind kind, QPointF topLeft,
@@ -38,8 +36,8 @@ bool isFree(const PipelineGraph& g, NodeKind kind, QPointF topLeft,
     for (NodeId id : g.nodeIds()) {
         if (std::find(ignore.begin(), ignore.end(), id) != ignore.end()) continue;
         const GraphNode& n = g.node(id);
-        if (box.intersects(boxAt(n.kind, {n.x, n.y}).adjusted(-kGap / 2, -kGap / 2, kGap / 2,
-                                                              kGap / 2)))
+        if (box.intersects(
+                boxAt(n.kind, {n.x, n.y}).adjusted(-kGap / 2, -kGap / 2, kGap / 2, kGap / 2)))
             return false;
     }
     return true;
@@ -69,9 +67,8 @@ PipelineEditor::PipelineEditor(ProjectSession* session, StudioModel* model, QWid
     fit_->setText(tr("Fit"));
     fit_->setToolTip(tr("Show the whole graph (F)"));
     connect(fit_, &QToolButton::clicked, view_, &NodeGraphView::fitGraph);
-    auto* help = new QLabel(tr("Click a node: its parameters (a Bake node: shown in the view) · "
-                               "drag output to input: connect · right-click: duplicate a "
-                               "branch, rename, remove"),
+    auto* help = new QLabel(tr("Click: parameters (a Bake node: shown) · drag output to input: "
+                               "connect · right-click: duplicate branch, rename, remove · F: fit"),
                             this);
     help->setWordWrap(true);
     QPalette dimmed = help->palette(); // a hint, quieter than the graph
@@ -115,8 +112,8 @@ PipelineEditor::PipelineEditor(ProjectSession* session, StudioModel* model, QWid
     connect(model_, &StudioModel::nodeProgress, this,
             [this](quint32 node, const QString& stage, qint64 done, qint64 total) {
                 const double fraction = total > 0 ? double(done) / double(total) : -1.0;
-                const QString text = total > 0 ? tr("%1 %2/%3").arg(stage).arg(done).arg(total)
-                                               : stage;
+                const QString text =
+                    total > 0 ? tr("%1 %2/%3").arg(stage).arg(done).arg(total) : stage;
                 view_->setProgress(node, fraction, text);
             });
     for (auto signal :
@@ -140,8 +137,8 @@ QPointF PipelineEditor::freeSpot(NodeKind kind, QPointF wanted) const {
     const double down = NodeGraphView::boxSize(kind).height() / 2;
     for (int column = 0; column < 20; ++column) {
         for (int row = 0; row < 40; ++row) {
-            const QPointF p = start + QPointF(column * (NodeGraphView::kNodeWidth + kGap),
-                                              snap(row * down));
+            const QPointF p =
+                start + QPointF(column * (NodeGraphView::kNodeWidth + kGap), snap(row * down));
             if (isFree(g, kind, p)) return p;
         }
     }

@@ -68,9 +68,9 @@ BuildParameters::BuildParameters(UndoAdapter& undo, StudioModel* model, QWidget*
     layout->addWidget(scroll_, 1);
     layout->addLayout(buttons);
 
-    for (auto signal : {&StudioModel::sceneChanged, &StudioModel::buildStarted,
-                        &StudioModel::runFinished, &StudioModel::buildCancelled,
-                        &StudioModel::shownBakeChanged})
+    for (auto signal :
+         {&StudioModel::sceneChanged, &StudioModel::buildStarted, &StudioModel::runFinished,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, &BuildParameters::updateButtons);
     connect(model_, &StudioModel::buildFailed, this, &BuildParameters::updateButtons);
     connect(&undo_, &UndoAdapter::documentChanged, this, &BuildParameters::followDocument);
@@ -102,8 +102,8 @@ void BuildParameters::updateTitle() {
 }
 
 void BuildParameters::updateButtons() {
-    const bool canBuild = model_->scene() != nullptr && !model_->building() &&
-                          model_->shownBake() != kNoNode;
+    const bool canBuild =
+        model_->scene() != nullptr && !model_->building() && model_->shownBake() != kNoNode;
     build_->setEnabled(canBuild);
     cancel_->setEnabled(model_->building());
 }

@@ -191,7 +191,7 @@ TEST_F(BranchesWindow, ASecondBranchBuildsShowsComparesExportsAndReopens) {
 
     // Saved and reopened: the branch, its name, the folders and the branch shown.
     const QString project = dir.filePath(QStringLiteral("branches.hlodproj"));
-    window->session()->save(project); // the path File ▸ Save As would ask for
+    window->session()->save(project);   // the path File ▸ Save As would ask for
     ASSERT_TRUE(window->saveProject()); // File ▸ Save: with the display and the shown branch
     auto reopened = openWindow();
     ASSERT_NE(reopened, nullptr);
@@ -200,8 +200,8 @@ TEST_F(BranchesWindow, ASecondBranchBuildsShowsComparesExportsAndReopens) {
     const PipelineGraph& back = reopened->session()->document().graph();
     EXPECT_EQ(back.nodeIds(), (std::vector<NodeId>{1, 2, 3, 4, 5, 6, 7}));
     EXPECT_EQ(back.node(6).name, "boxes");
-    EXPECT_EQ(paramText(back.node(7).params, "output"), dir.filePath(QStringLiteral("boxes"))
-                                                            .toStdString());
+    EXPECT_EQ(paramText(back.node(7).params, "output"),
+              dir.filePath(QStringLiteral("boxes")).toStdString());
     EXPECT_EQ(reopened->model()->shownBake(), 6u);
     EXPECT_EQ(reopened->model()->built().build->tree->volume, VolumeType::Aabb);
 }

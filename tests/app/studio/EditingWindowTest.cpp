@@ -119,7 +119,8 @@ TEST_F(EditingWindow, MergingTheOnlyTwoChildrenOfAClusterChangesNoOtherCluster) 
     click(tree().nodes[c].children[1], Qt::ControlModifier);
     ASSERT_TRUE(window->clusterEdits()->mergeAction()->isEnabled());
     keys(QKeySequence(Qt::CTRL | Qt::Key_G)); // Merge Clusters
-    ASSERT_EQ(window->session()->undo()->stack()->undoText(), QStringLiteral("Merge clusters"));
+    ASSERT_EQ(window->session()->undo()->stack()->undoText(),
+              QStringLiteral("Merge clusters (Cluster #2)"));
     ASSERT_TRUE(built());
     EXPECT_EQ(tree().nodes.size(), nodes);
     EXPECT_EQ(tree().height(), height);

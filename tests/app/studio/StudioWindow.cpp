@@ -72,8 +72,7 @@ bool settled(const MainWindow& window) {
     const PipelineGraph& g = window.session()->document().graph();
     const NodeId shown = model->shownBake();
     return !model->building() && model->hasBuild() && shown != kNoNode && g.hasNode(shown) &&
-           g.status(shown) == NodeStatus::UpToDate &&
-           model->built().build == g.sharedOutput(shown);
+           g.status(shown) == NodeStatus::UpToDate && model->built().build == g.sharedOutput(shown);
 }
 
 bool waitSettled(const MainWindow& window) {

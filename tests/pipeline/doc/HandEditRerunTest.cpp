@@ -57,8 +57,8 @@ TEST_F(HandEditRerun, OnlyTheEditedClustersAndTheirAncestorsAreRebaked) {
     // Merging DE and FG changes the tree only there (LocalConstraints.h): DE and FG stay and a
     // locked {DE, FG} takes their place under the root. 5 inner nodes: ABC, DE, FG, {DE, FG}
     // and the root; {DE, FG} and the root are new, ABC, DE and FG come from the cache.
-    doc.execute(std::make_unique<MergeClusters>(kDefaultCluster,
-                                                std::vector<InstanceSet>{{3, 4}, {5, 6}}));
+    doc.execute(
+        std::make_unique<MergeClusters>(kDefaultCluster, std::vector<InstanceSet>{{3, 4}, {5, 6}}));
     const BakeResult& merged = bake();
     EXPECT_EQ(merged.innerNodes, 5u);
     EXPECT_EQ(merged.baked, 2u);

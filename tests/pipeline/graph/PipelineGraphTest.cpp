@@ -121,7 +121,9 @@ TEST(PipelineGraph, AGraphThatCannotRunIsRefusedNamingTheNode) {
     g.connect({bake, 0, exp, 0});
     g.setParam(exp, "output", std::string("/out/b"));
     g.setName(bake, "coarse");
-    EXPECT_EQ(problemOf([&] { g.run({4, exp}); }),
+    EXPECT_EQ(problemOf([&] {
+                  g.run({4, exp});
+              }),
               "Bake #5 'coarse' has no Cluster node upstream: connect a Cluster node's clusters "
               "output to its input");
     EXPECT_EQ(g.status(bake), NodeStatus::Failed);
@@ -131,7 +133,9 @@ TEST(PipelineGraph, AGraphThatCannotRunIsRefusedNamingTheNode) {
     g.connect({1, 0, cluster, 0});
     g.connect({cluster, 0, bake, 0});
     g.setParam(exp, "output", std::string("/out/a/"));
-    EXPECT_EQ(problemOf([&] { g.checkRunnable({4, exp}); }),
+    EXPECT_EQ(problemOf([&] {
+                  g.checkRunnable({4, exp});
+              }),
               "Export #6 writes the same folder as Export #4 (/out/a): give one of them another "
               "output folder");
     EXPECT_EQ(g.status(exp), NodeStatus::Failed);
