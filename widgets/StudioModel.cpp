@@ -185,6 +185,13 @@ void StudioModel::runExports(const std::vector<NodeId>& exports) { startRun(expo
 
 void StudioModel::cancelBuild() { runner_->cancel(); }
 
+bool StudioModel::exporting() const {
+    if (!graph_) return false;
+    for (NodeId id : runner_->targets())
+        if (graph_->hasNode(id) && graph_->node(id).kind == NodeKind::Export) return true;
+    return false;
+}
+
 void StudioModel::onRunFinished(const std::vector<BuiltHlod>& bakes) {
     for (const BuiltHlod& b : bakes)
         setBuilt(b);

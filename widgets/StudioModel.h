@@ -100,6 +100,8 @@ public:
     const std::vector<NodeId>& runTargets() const { return runner_->targets(); }
     // Whether the running run brings `node` up to date as the graph defines it now.
     bool runCovers(NodeId node) const { return runner_->covers(node); }
+    // Whether the running run writes packages (one of its targets is an Export node).
+    bool exporting() const;
     // Whether a run of this session built something for the open scene (AutoRebuild starts only
     // after that).
     bool everBuilt() const { return everBuilt_; }

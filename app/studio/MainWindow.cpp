@@ -260,6 +260,11 @@ void MainWindow::openFiles(const QStringList& files) {
 }
 
 void MainWindow::onDocumentEdited() {
+    // A shown Bake node that was removed (or none shown while there is one): show the first.
+    const std::vector<hlod::NodeId> bakes = model_->bakeNodes();
+    if (!session_->replacing() &&
+        std::find(bakes.begin(), bakes.end(), model_->shownBake()) == bakes.end())
+        model_->setShownBake(bakes.empty() ? hlod::kNoNode : bakes.front());
     // An edit of the Import node (its files, its import parameters) reads the scene again: what
     // the view shows is that node's output.
     if (session_->replacing() || pendingProject_ || !model_->scene() || loader_->busy()) return;

@@ -42,6 +42,11 @@ void AutoRebuild::onChange() {
 void AutoRebuild::fire() {
     if (session_->replacing() || !model_->scene() || !model_->everBuilt() || !shownNeedsRun())
         return;
+    if (model_->exporting()) {
+        // Packages are being written: a new run would drop that one. Look again later.
+        timer_.start();
+        return;
+    }
     model_->build();
 }
 

@@ -10,6 +10,7 @@
 // nodes upstream of the shown one run, and the baker takes every unchanged proxy from the disk
 // cache. A change that does not reach the shown branch (another branch's parameter) starts
 // nothing.
+// A run that writes packages (File ▸ Export) is not interrupted: the rebuild waits for it.
 // Nothing is built before the scene's first build (StudioModel::everBuilt), nor for a document
 // being replaced (new, open: the scene reloads). A failed run is not retried until a change
 // makes the node Pending again; a cancelled one waits for the next change.

@@ -204,6 +204,10 @@ TEST_F(BranchesWindow, ASecondBranchBuildsShowsComparesExportsAndReopens) {
               dir.filePath(QStringLiteral("boxes")).toStdString());
     EXPECT_EQ(reopened->model()->shownBake(), 6u);
     EXPECT_EQ(reopened->model()->built().build->tree->volume, VolumeType::Aabb);
+    // Removing the shown Bake node shows the other branch.
+    auto* dock = reopened->findChild<widgets::PipelineEditor*>();
+    ASSERT_TRUE(dock->removeNode(6));
+    EXPECT_EQ(reopened->model()->shownBake(), kDefaultBake);
 }
 
 } // namespace
