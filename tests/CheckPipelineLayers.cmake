@@ -8,7 +8,7 @@
 # baking and its statistics. select / view: LOD selection / tree views for the editor (siblings,
 # neither needs the other). eval: benchmarks and plots. export: the package. graph: parameters
 # declared as data and the pipeline graph that runs the stages. doc: the document (commands,
-# undo, project files, the editor's HlodBuild) over the graph.
+# undo, project files) over the graph.
 #
 # Known exceptions (file -> header, and why) are listed in `allowed_exceptions`; anything else
 # that reaches up fails with the file, the header and the rule. A new folder must be given a

@@ -1,4 +1,4 @@
-// The 3D Tiles 1.1 rules our packages promise (DESIGN.md, the package), checked tile by tile as
+// The 3D Tiles 1.1 rules our packages promise (README.md, the package), checked tile by tile as
 // the official 3D Tiles validator checks them: relative content URIs inside the package that
 // exist; geometricError > 0 on tiles with children and 0 on tiles without, never growing from
 // parent to child, and the tileset's at least the root's; tile transforms affine; bounding

@@ -24,10 +24,6 @@
         <translation>%1, S = %2 px</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is not a configuration: use sphere, aabb, aabb-kK, octree, original or current, optionally followed by @S (screen size in pixels)</source>
-        <translation>&quot;%1&quot; är ingen konfiguration: använd sphere, aabb, aabb-kK, octree, original eller current, eventuellt följt av @S (skärmstorlek i pixlar)</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot;: k applies to aabb only</source>
         <translation>&quot;%1&quot;: k gäller bara aabb</translation>
     </message>
@@ -42,6 +38,10 @@
     <message>
         <source>&quot;%1&quot; is not a pair of configurations LEFT:RIGHT, e.g. sphere:aabb-k2</source>
         <translation>&quot;%1&quot; är inget par av konfigurationer VÄNSTER:HÖGER, t.ex. sphere:aabb-k2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a configuration: use #N (Bake node N), sphere, aabb, aabb-kK, octree, original or current, optionally followed by @S (screen size in pixels)</source>
+        <translation>&quot;%1&quot; är ingen konfiguration: använd #N (bakningsnod N), sphere, aabb, aabb-kK, octree, original eller current, eventuellt följt av @S (skärmstorlek i pixlar)</translation>
     </message>
 </context>
 <context>
@@ -274,10 +274,6 @@
         <translation>&amp;Bygg HLOD</translation>
     </message>
     <message>
-        <source>Cluster the scene and bake the proxies with the parameters of the Parameters dock, in the background</source>
-        <translation>Klustra scenen och baka proxyerna med parametrarna i parameterpanelen, i bakgrunden</translation>
-    </message>
-    <message>
         <source>&amp;Cancel Build</source>
         <translation>&amp;Avbryt bygget</translation>
     </message>
@@ -290,16 +286,8 @@
         <translation>Stoppa det pågående bygget; föregående HLOD finns kvar</translation>
     </message>
     <message>
-        <source>%1, %2 proxies, S = %3 px</source>
-        <translation>%1, %2-proxyer, S = %3 px</translation>
-    </message>
-    <message>
         <source>Building HLOD…</source>
         <translation>Bygger HLOD…</translation>
-    </message>
-    <message>
-        <source>Building the HLOD (%1)</source>
-        <translation>Bygger HLOD (%1)</translation>
     </message>
     <message>
         <source>Clustering</source>
@@ -324,10 +312,6 @@
     <message>
         <source>Reading</source>
         <translation>Läser</translation>
-    </message>
-    <message>
-        <source>Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, bake %5 s: %6 baked, %7 reused)</source>
-        <translation>HLOD byggd: %1 noder, höjd %2, %3 proxytrianglar (klustring %4 s, bakning %5 s: %6 bakade, %7 återanvända)</translation>
     </message>
     <message>
         <source>Could not build the HLOD</source>
@@ -364,10 +348,6 @@
     <message>
         <source>&amp;Export Package…</source>
         <translation>&amp;Exportera paket…</translation>
-    </message>
-    <message>
-        <source>Write the current HLOD as a 3D Tiles package</source>
-        <translation>Skriv aktuell HLOD som ett 3D Tiles-paket</translation>
     </message>
     <message>
         <source>Open Project</source>
@@ -420,10 +400,6 @@
     <message>
         <source>&amp;Compare Configurations…</source>
         <translation>&amp;Jämför konfigurationer…</translation>
-    </message>
-    <message>
-        <source>Build two configurations of this scene (e.g. sphere and AABB k=2) and compare them side by side with linked cameras and statistics</source>
-        <translation>Bygg två konfigurationer av scenen (t.ex. sfär och AABB k=2) och jämför dem sida vid sida med länkade kameror och statistik</translation>
     </message>
     <message>
         <source>The document now uses %1 (from the comparison)</source>
@@ -493,6 +469,62 @@
         <source>Opened %1: building its HLOD…</source>
         <translation>Öppnade %1: bygger dess HLOD…</translation>
     </message>
+    <message>
+        <source>The Import node changed: reading the scene again</source>
+        <translation>Importnoden har ändrats: scenen läses in igen</translation>
+    </message>
+    <message>
+        <source>Compare two branches of this scene (two Bake nodes, or one and a quick configuration such as AABB k=2) side by side with linked cameras and statistics</source>
+        <translation>Jämför två grenar av scenen (två bakningsnoder, eller en och en snabbkonfiguration som AABB k=2) sida vid sida med länkade kameror och statistik</translation>
+    </message>
+    <message>
+        <source>--compare: the document has no Bake node #%1</source>
+        <translation>--compare: dokumentet har ingen bakningsnod #%1</translation>
+    </message>
+    <message>
+        <source>Branch </source>
+        <translation>Gren </translation>
+    </message>
+    <message>
+        <source>Run the shown branch (its Cluster and Bake nodes) in the background: only what changed runs</source>
+        <translation>Kör den visade grenen (dess kluster- och bakningsnoder) i bakgrunden: bara det som ändrats körs</translation>
+    </message>
+    <message>
+        <source>Build &amp;All Branches</source>
+        <translation>Bygg &amp;alla grenar</translation>
+    </message>
+    <message>
+        <source>Run every Bake node of the scene in the background</source>
+        <translation>Kör alla bakningsnoder i scenen i bakgrunden</translation>
+    </message>
+    <message>
+        <source>Running %1</source>
+        <translation>Kör %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 nodes, height %3, %4 proxy triangles (cluster %5 s, bake %6 s: %7 baked, %8 reused)</source>
+        <translation>%1: %2 noder, höjd %3, %4 proxytrianglar (klustring %5 s, bakning %6 s: %7 bakade, %8 återanvända)</translation>
+    </message>
+    <message>
+        <source>Write the shown branch&apos;s package (its Export node) as 3D Tiles</source>
+        <translation>Skriv den visade grenens paket (dess exportnod) som 3D Tiles</translation>
+    </message>
+    <message>
+        <source>Export &amp;All Packages</source>
+        <translation>Exportera &amp;alla paket</translation>
+    </message>
+    <message>
+        <source>Run every Export node: each branch&apos;s package into its own folder</source>
+        <translation>Kör alla exportnoder: varje grens paket i sin egen mapp</translation>
+    </message>
+    <message>
+        <source>%1: wrote the package to %2 (%3 files)</source>
+        <translation>%1: skrev paketet till %2 (%3 filer)</translation>
+    </message>
+    <message>
+        <source>Exported %1 packages</source>
+        <translation>Exporterade %1 paket</translation>
+    </message>
 </context>
 <context>
     <name>NumberFormat</name>
@@ -516,66 +548,10 @@
     </message>
 </context>
 <context>
-    <name>hlod::widgets::BuildPanel</name>
+    <name>hlod::widgets::BranchBox</name>
     <message>
-        <source>Bounding volume of the clustering: spheres (Sappa &amp; Garcia), AABBs with the proportion constraint k, a loose octree, or the scene&apos;s own hierarchy</source>
-        <translation>Klustringens omslutande volym: sfärer (Sappa &amp; Garcia), AABB med proportionsvillkoret k, ett löst oktträd eller scenens egen hierarki</translation>
-    </message>
-    <message>
-        <source>AABB proportion constraint: cost × (max extent / min extent)^k</source>
-        <translation>AABB-proportionsvillkor: kostnad × (största utsträckning / minsta utsträckning)^k</translation>
-    </message>
-    <message>
-        <source>Most children an inner node may have</source>
-        <translation>Högsta antal barn en inre nod får ha</translation>
-    </message>
-    <message>
-        <source>How inner nodes get their proxies: quadric decimation, voxel remesh (watertight shell) or sloppy aggregate</source>
-        <translation>Hur inre noder får sina proxyer: kvadrisk decimering, voxelomnätning (vattentätt skal) eller grovt aggregat</translation>
-    </message>
-    <message>
-        <source> px</source>
-        <translation> px</translation>
-    </message>
-    <message>
-        <source>S: a node is drawn once its bounding sphere projects to at most this many pixels</source>
-        <translation>S: en nod ritas när dess omslutande sfär projiceras på högst så här många pixlar</translation>
-    </message>
-    <message>
-        <source>How far a proxy may deviate on screen at its switch point</source>
-        <translation>Hur mycket en proxy får avvika på skärmen vid sin växlingspunkt</translation>
-    </message>
-    <message>
-        <source>Volume</source>
-        <translation>Volym</translation>
-    </message>
-    <message>
-        <source>k</source>
-        <translation>k</translation>
-    </message>
-    <message>
-        <source>Max children</source>
-        <translation>Max antal barn</translation>
-    </message>
-    <message>
-        <source>Proxy</source>
-        <translation>Proxy</translation>
-    </message>
-    <message>
-        <source>Screen size S</source>
-        <translation>Skärmstorlek S</translation>
-    </message>
-    <message>
-        <source>Pixel error</source>
-        <translation>Pixelfel</translation>
-    </message>
-    <message>
-        <source>Build HLOD</source>
-        <translation>Bygg HLOD</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Avbryt</translation>
+        <source>The branch whose HLOD the view, the Clusters tab and Statistics show (also: click its Bake node in the Pipeline dock)</source>
+        <translation>Grenen vars HLOD vyn, klusterfliken och statistiken visar (eller: klicka på dess bakningsnod i pipelinepanelen)</translation>
     </message>
 </context>
 <context>
@@ -593,32 +569,28 @@
         <translation>Bygg HLOD</translation>
     </message>
     <message>
-        <source>Cluster the scene and bake the proxies with these parameters</source>
-        <translation>Klustra scenen och baka proxyerna med dessa parametrar</translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation>Avbryt</translation>
     </message>
     <message>
-        <source>Import</source>
-        <translation>Import</translation>
+        <source>Import (reading the scene)</source>
+        <translation>Import (läsning av scenen)</translation>
     </message>
     <message>
-        <source>Cluster</source>
-        <translation>Kluster</translation>
+        <source>Package</source>
+        <translation>Paket</translation>
     </message>
     <message>
-        <source>Bake</source>
-        <translation>Bakning</translation>
+        <source>Click a node in the Pipeline dock to see and edit its parameters.</source>
+        <translation>Klicka på en nod i pipelinepanelen för att se och ändra dess parametrar.</translation>
     </message>
     <message>
-        <source>Export</source>
-        <translation>Exportera</translation>
+        <source>Run the shown branch (its Cluster and Bake nodes) with these parameters</source>
+        <translation>Kör den visade grenen (dess kluster- och bakningsnoder) med dessa parametrar</translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
     </message>
 </context>
 <context>
@@ -774,10 +746,6 @@
         <translation>Använd dessa inställningar</translation>
     </message>
     <message>
-        <source>Set the document&apos;s volume, k and screen size to this side&apos;s values (one step in Edit ▸ Undo)</source>
-        <translation>Sätt dokumentets volym, k och skärmstorlek till den här sidans värden (ett steg i Redigera ▸ Ångra)</translation>
-    </message>
-    <message>
         <source>Volume</source>
         <translation>Volym</translation>
     </message>
@@ -837,6 +805,26 @@
         <source>%1 nodes, height %2; built in %3 s (%4 proxies baked, %5 from the cache)</source>
         <translation>%1 noder, höjd %2; byggd på %3 s (%4 proxyer bakade, %5 från cachen)</translation>
     </message>
+    <message>
+        <source>A Bake node of the document, or Custom: the values on the right over the shown branch (built as a temporary branch, the document is not changed)</source>
+        <translation>En bakningsnod i dokumentet, eller Anpassad: värdena till höger över den visade grenen (byggs som en tillfällig gren, dokumentet ändras inte)</translation>
+    </message>
+    <message>
+        <source>Set the volume, k and screen size of the branch this side is laid over to this side&apos;s values (one step in Edit ▸ Undo)</source>
+        <translation>Sätt volym, k och skärmstorlek för grenen som den här sidan bygger på till den här sidans värden (ett steg i Redigera ▸ Ångra)</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Anpassad</translation>
+    </message>
+    <message>
+        <source>%1 (over %2)</source>
+        <translation>%1 (över %2)</translation>
+    </message>
+    <message>
+        <source>The document has no Import node to build from</source>
+        <translation>Dokumentet har ingen importnod att bygga från</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::CompareTable</name>
@@ -865,10 +853,6 @@
         <translation>Proxytrianglar</translation>
     </message>
     <message>
-        <source>Package size (geometry, est.)</source>
-        <translation>Paketstorlek (geometri, uppsk.)</translation>
-    </message>
-    <message>
         <source>Draw calls of the current frame for the linked camera (HLOD preview)</source>
         <translation>Ritanrop i den aktuella bilden för den länkade kameran (HLOD-förhandsvisning)</translation>
     </message>
@@ -885,16 +869,20 @@
         <translation>Trianglar i alla de inre nodernas proxyer tillsammans</translation>
     </message>
     <message>
-        <source>Geometry of the package&apos;s tiles as the exporter stores it (original meshes of the leaves and the proxies); tileset.json, hlod.json, GLB headers and textures come on top, so the folder is somewhat larger</source>
-        <translation>Geometrin i paketets tiles som exporten lagrar den (lövens ursprungliga nät och proxyerna); tileset.json, hlod.json, GLB-huvuden och texturer tillkommer, så mappen blir något större</translation>
-    </message>
-    <message>
         <source>Lower is better.</source>
         <translation>Lägre är bättre.</translation>
     </message>
     <message>
         <source>%1 bytes</source>
         <translation>%1 byte</translation>
+    </message>
+    <message>
+        <source>Package on disk</source>
+        <translation>Paket på disk</translation>
+    </message>
+    <message>
+        <source>Bytes on disk of the package hlod build writes for this side (compressed, the allocated blocks of all its files): the figure hlod build prints</source>
+        <translation>Byte på disk för paketet som hlod build skriver för den här sidan (komprimerat, de allokerade blocken för alla dess filer): siffran hlod build skriver ut</translation>
     </message>
 </context>
 <context>
@@ -928,10 +916,6 @@
         <translation>Bygg om båda</translation>
     </message>
     <message>
-        <source>Build both sides again with the document&apos;s current settings</source>
-        <translation>Bygg båda sidorna igen med dokumentets aktuella inställningar</translation>
-    </message>
-    <message>
         <source>Compare Configurations</source>
         <translation>Jämför konfigurationer</translation>
     </message>
@@ -958,6 +942,10 @@
     <message>
         <source>Close the comparison (Esc); its builds stop</source>
         <translation>Stäng jämförelsen (Esc); dess byggen stoppas</translation>
+    </message>
+    <message>
+        <source>Build both sides again from the document&apos;s current graph</source>
+        <translation>Bygg båda sidorna igen från dokumentets nuvarande graf</translation>
     </message>
 </context>
 <context>
@@ -1089,10 +1077,6 @@ Besökta noder: %3</translation>
 <context>
     <name>hlod::widgets::ExportDialog</name>
     <message>
-        <source>Export Package</source>
-        <translation>Exportera paket</translation>
-    </message>
-    <message>
         <source>The package folder: tileset.json, tiles/*.glb and hlod.json</source>
         <translation>Paketmappen: tileset.json, tiles/*.glb och hlod.json</translation>
     </message>
@@ -1136,9 +1120,25 @@ Besökta noder: %3</translation>
         <source>Wrote %1 files (%2) to %3</source>
         <translation>Skrev %1 filer (%2) till %3</translation>
     </message>
+    <message>
+        <source>Export Package — %1</source>
+        <translation>Exportera paket — %1</translation>
+    </message>
+    <message>
+        <source>Branch: %1</source>
+        <translation>Gren: %1</translation>
+    </message>
+    <message>
+        <source>Nothing to export: open a scene first</source>
+        <translation>Inget att exportera: öppna en scen först</translation>
+    </message>
+    <message>
+        <source>The export did not finish (the document changed meanwhile)</source>
+        <translation>Exporten blev inte klar (dokumentet ändrades under tiden)</translation>
+    </message>
 </context>
 <context>
-    <name>hlod::widgets::HlodBuilder</name>
+    <name>hlod::widgets::GraphRunner</name>
     <message>
         <source>Not enough memory to build the HLOD of this scene</source>
         <translation>Inte tillräckligt med minne för att bygga HLOD för den här scenen</translation>
@@ -1205,6 +1205,62 @@ Besökta noder: %3</translation>
         <source>Add %1 Node</source>
         <translation>Lägg till %1-nod</translation>
     </message>
+    <message>
+        <source>sample scene</source>
+        <translation>exempelscen</translation>
+    </message>
+    <message>
+        <source>%1 + %2 more</source>
+        <translation>%1 + %2 till</translation>
+    </message>
+    <message>
+        <source>%1%2, ≤ %3 children</source>
+        <translation>%1%2, ≤ %3 barn</translation>
+    </message>
+    <message>
+        <source>S %1 px, %2</source>
+        <translation>S %1 px, %2</translation>
+    </message>
+    <message>
+        <source>no output folder</source>
+        <translation>ingen utmapp</translation>
+    </message>
+    <message>
+        <source>to %1</source>
+        <translation>till %1</translation>
+    </message>
+    <message>
+        <source>running %1%</source>
+        <translation>kör %1%</translation>
+    </message>
+    <message>
+        <source>Package written to %1</source>
+        <translation>Paketet skrevs till %1</translation>
+    </message>
+    <message>
+        <source>Shown in the 3D view</source>
+        <translation>Visas i 3D-vyn</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate %1</source>
+        <translation>D&amp;uplicera %1</translation>
+    </message>
+    <message>
+        <source>Duplicate &amp;Branch</source>
+        <translation>Duplicera &amp;gren</translation>
+    </message>
+    <message>
+        <source>Copy this node and everything downstream of it: a second variant fed by the same input</source>
+        <translation>Kopiera noden och allt nedströms om den: en andra variant som matas av samma indata</translation>
+    </message>
+    <message>
+        <source>&amp;Rename…</source>
+        <translation>&amp;Byt namn…</translation>
+    </message>
+    <message>
+        <source>&amp;Fit View</source>
+        <translation>&amp;Anpassa vyn</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::PipelineEditor</name>
@@ -1229,24 +1285,32 @@ Besökta noder: %3</translation>
         <translation>Exportera</translation>
     </message>
     <message>
-        <source>Click a node: its parameters · drag output to input: connect · right-click: add, remove, disconnect</source>
-        <translation>Klicka på en nod: dess parametrar · dra utgång till ingång: koppla · högerklick: lägg till, ta bort, koppla från</translation>
+        <source>Add a node: after the selected node when it can take its output</source>
+        <translation>Lägg till en nod: efter den valda noden när den kan ta dess utdata</translation>
     </message>
     <message>
-        <source>Runs on File ▸ Export Package</source>
-        <translation>Körs vid Arkiv ▸ Exportera paket</translation>
+        <source>Fit</source>
+        <translation>Anpassa</translation>
     </message>
     <message>
-        <source>The pipeline needs a %1 node: add another one before removing this one</source>
-        <translation>Pipelinen behöver en %1-nod: lägg till en till innan du tar bort den här</translation>
+        <source>Show the whole graph (F)</source>
+        <translation>Visa hela grafen (F)</translation>
     </message>
     <message>
-        <source>Exported to %1</source>
-        <translation>Exporterat till %1</translation>
+        <source>Click: parameters (a Bake node: shown) · drag output to input: connect · right-click: duplicate branch, rename, remove · F: fit</source>
+        <translation>Klick: parametrar (en bakningsnod: visas) · dra utgång till ingång: koppla · högerklick: duplicera gren, byt namn, ta bort · F: anpassa</translation>
     </message>
     <message>
-        <source>The package in %1 is older than the HLOD shown: export again (File ▸ Export Package)</source>
-        <translation>Paketet i %1 är äldre än den visade HLOD:en: exportera igen (Arkiv ▸ Exportera paket)</translation>
+        <source>%1 %2/%3</source>
+        <translation>%1 %2/%3</translation>
+    </message>
+    <message>
+        <source>Rename Node</source>
+        <translation>Byt namn på nod</translation>
+    </message>
+    <message>
+        <source>Name of %1 (empty for none; hlod build --export NAME picks an Export by it):</source>
+        <translation>Namn på %1 (tomt för inget; hlod build --export NAMN väljer en export med det):</translation>
     </message>
 </context>
 <context>
@@ -1404,6 +1468,30 @@ Besökta noder: %3</translation>
         <source>HLOD: the original meshes plus all %1 proxies, as the thesis&apos; tables count it: what the package stores, not what is drawn at once. The proxies hold %2 triangles, %3 of the original (%4).</source>
         <translation>HLOD: originalnäten plus alla %1 proxyer, som avhandlingens tabeller räknar: det paketet lagrar, inte det som ritas samtidigt. Proxyerna har %2 trianglar, %3 av originalet (%4).</translation>
     </message>
+    <message>
+        <source>No Bake node is shown: pick a branch in the toolbar or click a Bake node</source>
+        <translation>Ingen bakningsnod visas: välj en gren i verktygsfältet eller klicka på en bakningsnod</translation>
+    </message>
+    <message>
+        <source>not built yet</source>
+        <translation>inte byggd än</translation>
+    </message>
+    <message>
+        <source>up to date</source>
+        <translation>aktuell</translation>
+    </message>
+    <message>
+        <source>building; its last build shown</source>
+        <translation>byggs; dess senaste bygge visas</translation>
+    </message>
+    <message>
+        <source>changed since this build</source>
+        <translation>ändrad sedan det här bygget</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Branch:&lt;/b&gt; %1 (%2)</source>
+        <translation>&lt;b&gt;Gren:&lt;/b&gt; %1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>hlod::widgets::StatsPlot</name>
@@ -1478,16 +1566,20 @@ Besökta noder: %3</translation>
         <translation>HLOD-förhandsvisning: tona ritade noder efter träddjup.</translation>
     </message>
     <message>
-        <source>Compare two configurations side by side, e.g. sphere:aabb-k2 (also octree, original, current, @S for the screen size).</source>
-        <translation>Jämför två konfigurationer sida vid sida, t.ex. sphere:aabb-k2 (även octree, original, current, @S för skärmstorleken).</translation>
-    </message>
-    <message>
         <source>Scene files or folders, opened as one scene; or one .hlodproj project (its scene, parameters and hand edits, built and shown).</source>
         <translation>Scenfiler eller mappar, som öppnas som en scen; eller ett .hlodproj-projekt (dess scen, parametrar och handredigeringar, byggt och visat).</translation>
     </message>
     <message>
         <source>no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset). Run it in a desktop session or under xvfb-run -a, or use the hlod command-line tool (hlod --help).</source>
         <translation>ingen skärm att öppna ett fönster på (DISPLAY och WAYLAND_DISPLAY är inte satta). Kör den i en skrivbordssession eller under xvfb-run -a, eller använd kommandoradsverktyget hlod (hlod --help).</translation>
+    </message>
+    <message>
+        <source>Build every branch (each Bake node of the pipeline) once the scene is loaded.</source>
+        <translation>Bygg alla grenar (varje bakningsnod i pipelinen) när scenen har lästs in.</translation>
+    </message>
+    <message>
+        <source>Compare two branches side by side, e.g. sphere:aabb-k2 (also octree, original, current, @S for the screen size; #N: Bake node N).</source>
+        <translation>Jämför två grenar sida vid sida, t.ex. sphere:aabb-k2 (även octree, original, current, @S för skärmstorleken; #N: bakningsnod N).</translation>
     </message>
 </context>
 </TS>

@@ -143,11 +143,11 @@ vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std:
     return lines.finish();
 }
 
-vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
+vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const NodeOutput& build,
                                          const std::vector<Id>& drawList,
                                          const std::vector<int>* depths, bool leaveOutTextured) {
     MergedGeometry geometry(kNodeIdArray);
-    const ClusterTree& tree = build.tree;
+    const ClusterTree& tree = *build.tree;
     for (Id n : drawList) {
         if (n >= tree.nodes.size()) continue;
         if (leaveOutTextured && TexturedPreview::draws(scene, build, n)) continue;
@@ -157,8 +157,8 @@ vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& bu
         if (node.isLeaf()) {
             if (node.instance < scene.instances.size())
                 geometry.addInstance(scene, node.instance, n, tint);
-        } else if (n < build.bake.nodes.size()) {
-            geometry.addProxy(build.bake.nodes[n].proxy, n, tint);
+        } else if (n < build.bake->nodes.size()) {
+            geometry.addProxy(build.bake->nodes[n].proxy, n, tint);
         }
     }
     return geometry.finish();
@@ -176,11 +176,11 @@ vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
 
 namespace hlod::widgets {
 
-vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const NodeOutput& build,
                                               const std::vector<Id>& drawList,
                                               const std::vector<Id>& instances) {
     MergedGeometry geometry(kNodeIdArray);
-    const ClusterTree& tree = build.tree;
+    const ClusterTree& tree = *build.tree;
     for (Id n : drawList) {
         if (n >= tree.nodes.size()) continue;
         const std::vector<Id> below = instancesBelow(tree, n);
@@ -192,8 +192,8 @@ vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuil
         if (node.isLeaf()) {
             if (node.instance < scene.instances.size())
                 geometry.addInstance(scene, node.instance, n, kHighlightColor);
-        } else if (n < build.bake.nodes.size()) {
-            geometry.addProxy(build.bake.nodes[n].proxy, n, kHighlightColor);
+        } else if (n < build.bake->nodes.size()) {
+            geometry.addProxy(build.bake->nodes[n].proxy, n, kHighlightColor);
         }
     }
     return geometry.finish();

@@ -20,7 +20,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-#include "pipeline/doc/HlodBuild.h"
+#include "pipeline/graph/PipelineGraph.h"
 #include "widgets/MergedGeometry.h"
 #include "widgets/StudioModel.h"
 
@@ -54,7 +54,7 @@ vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std:
 glm::vec3 highlightColor();
 
 // `depths` non-null: tint each drawn node by its depth (StudioModel::depths()).
-vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const HlodBuild& build,
+vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const NodeOutput& build,
                                          const std::vector<Id>& drawList,
                                          const std::vector<int>* depths,
                                          bool leaveOutTextured = false);
@@ -64,7 +64,7 @@ vtkSmartPointer<vtkPolyData> selectionHighlight(const Scene& scene,
 // The highlight of the HLOD preview: of the drawn nodes (`drawList`), those holding a selected
 // instance (`instances`, sorted), as drawn (the proxy of an inner node, the mesh of a leaf) in
 // the highlight colour. Cell ids: "NodeId".
-vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const HlodBuild& build,
+vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const NodeOutput& build,
                                               const std::vector<Id>& drawList,
                                               const std::vector<Id>& instances);
 

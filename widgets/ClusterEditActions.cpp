@@ -110,7 +110,7 @@ std::vector<Id> ClusterEditActions::selectedNodes() const {
     if (!built.build || !tree_->selectionModel()) return nodes;
     for (const QModelIndex& row : tree_->selectionModel()->selectedRows()) {
         const Id node = treeModel_->nodeOf(row);
-        if (node < built.build->tree.nodes.size()) nodes.push_back(node);
+        if (node < built.build->tree->nodes.size()) nodes.push_back(node);
     }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -120,15 +120,15 @@ std::vector<Id> ClusterEditActions::selectedNodes() const {
 std::vector<InstanceSet> ClusterEditActions::selectedClusters() const {
     std::vector<InstanceSet> sets;
     for (Id node : selectedNodes())
-        sets.push_back(leafSet(model_->built().build->tree, node));
+        sets.push_back(leafSet(*model_->built().build->tree, node));
     std::sort(sets.begin(), sets.end());
     return sets;
 }
 
 InstanceSet ClusterEditActions::excludedInSelection() const {
     const Document& doc = session_->document();
-    if (doc.clusterNode() == kNoNode) return {};
-    const InstanceSet& excluded = doc.graph().node(doc.clusterNode()).edits.excluded;
+    if (model_->shownCluster() == kNoNode) return {};
+    const InstanceSet& excluded = doc.graph().node(model_->shownCluster()).edits.excluded;
     InstanceSet out;
     for (const InstanceSet& set : selectedClusters())
         for (Id instance : set)
@@ -140,16 +140,17 @@ InstanceSet ClusterEditActions::excludedInSelection() const {
 void ClusterEditActions::updateActions() {
     const std::vector<Id> nodes = selectedNodes();
     const bool idle =
-        model_->hasBuild() && !model_->building() && session_->document().clusterNode() != kNoNode;
+        model_->hasBuild() && !model_->building() && model_->shownCluster() != kNoNode;
     bool clusters = false;    // an inner node other than the root (split, lock)
     bool unlocked = false;    // one of those not locked yet
     bool lockedGroup = false; // a selected cluster that is a locked group of the hand edits
     bool root = false;
     bool nested = false; // one selected row inside another
     if (idle) {
-        const ClusterTree& tree = model_->built().build->tree;
+        const ClusterTree& tree = *model_->built().build->tree;
         const Document& doc = session_->document();
-        const std::vector<InstanceSet>& locked = doc.graph().node(doc.clusterNode()).edits.locked;
+        const std::vector<InstanceSet>& locked =
+            doc.graph().node(model_->shownCluster()).edits.locked;
         for (Id node : nodes) {
             const ClusterNode& n = tree.nodes[node];
             root = root || node == tree.root;
@@ -207,7 +208,7 @@ Id ClusterEditActions::pickCluster(const QPoint& pos) {
     Id node = model_->selection().clusterNode;
     if (node == kNoId || model_->view().mode != DisplayMode::Clusters) return node;
     // Clusters mode colours the clusters of the shown level: the click means the one holding it.
-    const ClusterTree& tree = model_->built().build->tree;
+    const ClusterTree& tree = *model_->built().build->tree;
     const std::vector<Id>& cut = display_->shownClusters();
     for (Id n = node; n != kNoId; n = tree.nodes[n].parent) {
         if (std::find(cut.begin(), cut.end(), n) != cut.end()) {
@@ -262,15 +263,15 @@ Id ClusterEditActions::selectForMenuAt(const QPoint& pos) {
 
 bool ClusterEditActions::merge() {
     std::vector<InstanceSet> sets = selectedClusters();
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (sets.size() < 2 || node == kNoNode) return false;
     return session_->undo()->execute(std::make_unique<MergeClusters>(node, std::move(sets)));
 }
 
 bool ClusterEditActions::split() {
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (!model_->hasBuild() || node == kNoNode) return false;
-    const ClusterTree& tree = model_->built().build->tree;
+    const ClusterTree& tree = *model_->built().build->tree;
     bool any = false;
     for (Id cluster : selectedNodes()) {
         if (cluster == tree.root || tree.nodes[cluster].isLeaf()) continue;
@@ -282,9 +283,9 @@ bool ClusterEditActions::split() {
 }
 
 bool ClusterEditActions::lock() {
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (node == kNoNode || !model_->hasBuild()) return false;
-    const ClusterTree& tree = model_->built().build->tree;
+    const ClusterTree& tree = *model_->built().build->tree;
     bool any = false;
     for (Id cluster : selectedNodes()) {
         const ClusterNode& n = tree.nodes[cluster];
@@ -297,7 +298,7 @@ bool ClusterEditActions::lock() {
 }
 
 bool ClusterEditActions::unlock() {
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (node == kNoNode) return false;
     const std::vector<InstanceSet>& locked = session_->document().graph().node(node).edits.locked;
     std::vector<InstanceSet> toUnlock;
@@ -313,7 +314,7 @@ bool ClusterEditActions::exclude() {
     InstanceSet all;
     for (const InstanceSet& set : selectedClusters())
         all.insert(all.end(), set.begin(), set.end());
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (all.empty() || node == kNoNode) return false;
     return session_->undo()->execute(
         std::make_unique<ExcludeInstance>(node, normalizedSet(std::move(all))));
@@ -321,7 +322,7 @@ bool ClusterEditActions::exclude() {
 
 bool ClusterEditActions::include() {
     InstanceSet excluded = excludedInSelection();
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (excluded.empty() || node == kNoNode) return false;
     return session_->undo()->execute(std::make_unique<IncludeInstance>(node, std::move(excluded)));
 }
@@ -348,7 +349,7 @@ bool ClusterEditActions::moveToCurrent() {
 }
 
 bool ClusterEditActions::moveTo(const std::vector<InstanceSet>& items, const InstanceSet& target) {
-    const NodeId node = session_->document().clusterNode();
+    const NodeId node = model_->shownCluster();
     if (items.empty() || target.empty() || node == kNoNode || model_->building()) return false;
     return session_->undo()->execute(std::make_unique<MoveToCluster>(node, items, target));
 }

@@ -17,7 +17,7 @@ namespace hlod::widgets {
 ClusterTreeModel::ClusterTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
 
 void ClusterTreeModel::setBuild(std::shared_ptr<const Scene> scene,
-                                std::shared_ptr<const HlodBuild> build, std::vector<int> labels) {
+                                std::shared_ptr<const NodeOutput> build, std::vector<int> labels) {
     beginResetModel();
     scene_ = build ? std::move(scene) : nullptr;
     build_ = scene_ ? std::move(build) : nullptr;
@@ -27,7 +27,7 @@ void ClusterTreeModel::setBuild(std::shared_ptr<const Scene> scene,
     keys_.clear();
     nodeOfKey_.clear();
     if (build_) {
-        const ClusterTree& tree = build_->tree;
+        const ClusterTree& tree = *build_->tree;
         if (labels.size() == tree.nodes.size()) labels_ = std::move(labels);
         keys_ = clusterKeys(tree);
         nodeOfKey_.reserve(keys_.size());
@@ -47,8 +47,8 @@ Id ClusterTreeModel::nodeOf(const QModelIndex& index) const {
 }
 
 QModelIndex ClusterTreeModel::indexOfNode(Id node) const {
-    if (!build_ || node >= build_->tree.nodes.size()) return {};
-    const int row = node == build_->tree.root ? 0 : rowInParent_[node];
+    if (!build_ || node >= build_->tree->nodes.size()) return {};
+    const int row = node == build_->tree->root ? 0 : rowInParent_[node];
     return createIndex(row, 0, static_cast<quintptr>(node));
 }
 
@@ -63,17 +63,17 @@ QModelIndex ClusterTreeModel::indexOfKey(ClusterKey key) const {
 }
 
 InstanceSet ClusterTreeModel::leafSetOf(Id node) const {
-    if (!build_ || node >= build_->tree.nodes.size()) return {};
-    return leafSet(build_->tree, node);
+    if (!build_ || node >= build_->tree->nodes.size()) return {};
+    return leafSet(*build_->tree, node);
 }
 
 Qt::ItemFlags ClusterTreeModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = QAbstractItemModel::flags(index);
     if (!index.isValid() || !build_) return f;
     const Id node = nodeOf(index);
-    if (node == build_->tree.root) return f;
+    if (node == build_->tree->root) return f;
     f |= Qt::ItemIsDragEnabled;
-    if (!build_->tree.nodes[node].isLeaf()) f |= Qt::ItemIsDropEnabled;
+    if (!build_->tree->nodes[node].isLeaf()) f |= Qt::ItemIsDropEnabled;
     return f;
 }
 
@@ -122,7 +122,7 @@ bool ClusterTreeModel::decodeDrop(const QMimeData* data, const QModelIndex& pare
 bool ClusterTreeModel::acceptsMove(const std::vector<InstanceSet>& items,
                                    const InstanceSet& target) const {
     if (!build_ || items.empty()) return false;
-    const ClusterTree& tree = build_->tree;
+    const ClusterTree& tree = *build_->tree;
     const Id t = findCluster(tree, target);
     if (t == kNoId || t == tree.root || tree.nodes[t].isLeaf()) return false;
     bool anyMoves = false;
@@ -155,34 +155,34 @@ bool ClusterTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action
 }
 
 QModelIndex ClusterTreeModel::index(int row, int column, const QModelIndex& parent) const {
-    if (!build_ || build_->tree.root == kNoId || row < 0 || column < 0 || column >= ColumnCount)
+    if (!build_ || build_->tree->root == kNoId || row < 0 || column < 0 || column >= ColumnCount)
         return {};
     if (!parent.isValid())
-        return row == 0 ? createIndex(0, column, static_cast<quintptr>(build_->tree.root))
+        return row == 0 ? createIndex(0, column, static_cast<quintptr>(build_->tree->root))
                         : QModelIndex();
-    const auto& children = build_->tree.nodes[nodeOf(parent)].children;
+    const auto& children = build_->tree->nodes[nodeOf(parent)].children;
     if (row >= static_cast<int>(children.size())) return {};
     return createIndex(row, column, static_cast<quintptr>(children[row]));
 }
 
 QModelIndex ClusterTreeModel::parent(const QModelIndex& child) const {
     if (!child.isValid() || !build_) return {};
-    const Id parentNode = build_->tree.nodes[nodeOf(child)].parent;
+    const Id parentNode = build_->tree->nodes[nodeOf(child)].parent;
     return parentNode == kNoId ? QModelIndex() : indexOfNode(parentNode);
 }
 
 int ClusterTreeModel::rowCount(const QModelIndex& parent) const {
-    if (!build_ || build_->tree.root == kNoId) return 0;
+    if (!build_ || build_->tree->root == kNoId) return 0;
     if (!parent.isValid()) return 1;
     if (parent.column() != 0) return 0;
-    return static_cast<int>(build_->tree.nodes[nodeOf(parent)].children.size());
+    return static_cast<int>(build_->tree->nodes[nodeOf(parent)].children.size());
 }
 
 int ClusterTreeModel::columnCount(const QModelIndex&) const { return ColumnCount; }
 
 QString ClusterTreeModel::name(Id node) const {
-    if (!build_ || node >= build_->tree.nodes.size()) return {};
-    const ClusterNode& n = build_->tree.nodes[node];
+    if (!build_ || node >= build_->tree->nodes.size()) return {};
+    const ClusterNode& n = build_->tree->nodes[node];
     const int number = node < labels_.size() ? labels_[node] : static_cast<int>(node);
     if (!n.isLeaf() || n.instance >= scene_->instances.size())
         return n.locked ? tr("Cluster %1 (locked)").arg(number) : tr("Cluster %1").arg(number);
@@ -193,9 +193,9 @@ QString ClusterTreeModel::name(Id node) const {
 }
 
 double ClusterTreeModel::volume(Id node) const {
-    if (!build_ || node >= build_->tree.nodes.size()) return 0.0;
-    const ClusterNode& n = build_->tree.nodes[node];
-    if (build_->tree.volume == VolumeType::Sphere)
+    if (!build_ || node >= build_->tree->nodes.size()) return 0.0;
+    const ClusterNode& n = build_->tree->nodes[node];
+    if (build_->tree->volume == VolumeType::Sphere)
         return 4.0 / 3.0 * std::numbers::pi * n.sphere.radius * n.sphere.radius * n.sphere.radius;
     if (n.box.empty()) return 0.0;
     const glm::dvec3 e = n.box.max - n.box.min;
@@ -203,18 +203,18 @@ double ClusterTreeModel::volume(Id node) const {
 }
 
 double ClusterTreeModel::size(Id node) const {
-    if (!build_ || node >= build_->tree.nodes.size()) return 0.0;
-    const ClusterNode& n = build_->tree.nodes[node];
-    if (build_->tree.volume == VolumeType::Sphere) return 2.0 * n.sphere.radius;
+    if (!build_ || node >= build_->tree->nodes.size()) return 0.0;
+    const ClusterNode& n = build_->tree->nodes[node];
+    if (build_->tree->volume == VolumeType::Sphere) return 2.0 * n.sphere.radius;
     return n.box.empty() ? 0.0 : n.box.diagonal();
 }
 
 QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || !build_) return {};
     const Id node = nodeOf(index);
-    const ClusterNode& n = build_->tree.nodes[node];
+    const ClusterNode& n = build_->tree->nodes[node];
     const std::size_t proxy =
-        node < build_->bake.nodes.size() ? build_->bake.nodes[node].proxy.triangleCount() : 0;
+        node < build_->bake->nodes.size() ? build_->bake->nodes[node].proxy.triangleCount() : 0;
     const QLocale locale;
     if (role == NodeIdRole) return QVariant::fromValue(static_cast<uint>(node));
     if (role == Qt::TextAlignmentRole)

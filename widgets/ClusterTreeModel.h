@@ -26,8 +26,8 @@
 
 #include <QAbstractItemModel>
 
-#include "pipeline/doc/HlodBuild.h"
 #include "pipeline/graph/HandEdits.h"
+#include "pipeline/graph/PipelineGraph.h"
 #include "pipeline/scene/Scene.h"
 #include "widgets/ClusterIdentity.h"
 
@@ -52,7 +52,7 @@ public:
 
     // Shows `build` of `scene`; null clears the model. `labels` (StudioModel::clusterLabels):
     // the number each cluster is called by; empty: its node id.
-    void setBuild(std::shared_ptr<const Scene> scene, std::shared_ptr<const HlodBuild> build,
+    void setBuild(std::shared_ptr<const Scene> scene, std::shared_ptr<const NodeOutput> build,
                   std::vector<int> labels = {});
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
@@ -102,7 +102,7 @@ private:
                     std::vector<InstanceSet>& items, InstanceSet& target) const;
 
     std::shared_ptr<const Scene> scene_;
-    std::shared_ptr<const HlodBuild> build_;
+    std::shared_ptr<const NodeOutput> build_;
     std::vector<std::uint64_t> triangles_;
     std::vector<int> rowInParent_;
     std::vector<int> labels_;

@@ -161,7 +161,7 @@ void DisplayController::updateLegend() {
         entries.push_back({tr("Level %1: one colour per cluster").arg(model_->view().level),
                            glm::vec3(1.0f), false});
         // Clusters before single meshes, the largest first; the rest in one line.
-        const ClusterTree& tree = model_->built().build->tree;
+        const ClusterTree& tree = *model_->built().build->tree;
         std::vector<Id> shown = cut_;
         const auto& triangles = model_->subtreeTriangles();
         std::stable_sort(shown.begin(), shown.end(), [&](Id a, Id b) {
@@ -217,7 +217,7 @@ void DisplayController::refreshClusters() {
         coloringFor_ = built.build.get();
         clusterActor_->GetMapper()->SetInputDataObject(coloring_->polyData());
     }
-    const ClusterTree& tree = built.build->tree;
+    const ClusterTree& tree = *built.build->tree;
     cut_ = coloring_->colorByLevel(tree, model_->view().level, &model_->clusterLabels());
     std::vector<Id> bounded = cut_;
     if (model_->view().boundsOfSelectionOnly) {
@@ -274,7 +274,7 @@ std::vector<Id> DisplayController::highlightedInstances() const {
         std::sort(seen.begin(), seen.end());
         seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
         for (Id n : seen) {
-            const std::vector<Id> below = instancesBelow(model_->built().build->tree, n);
+            const std::vector<Id> below = instancesBelow(*model_->built().build->tree, n);
             out.insert(out.end(), below.begin(), below.end());
         }
     }
@@ -368,8 +368,8 @@ void DisplayController::pickAt(const QPoint& pos) {
     auto* actor = vtkActor::SafeDownCast(hit.prop);
     if (const Id node = textured_->nodeOf(actor); node != kNoId) {
         const BuiltHlod& built = model_->built();
-        if (built.build->tree.nodes[node].isLeaf())
-            model_->selectInstance(built.build->tree.nodes[node].instance);
+        if (built.build->tree->nodes[node].isLeaf())
+            model_->selectInstance(built.build->tree->nodes[node].instance);
         else
             model_->selectClusterNode(node);
         return;
@@ -377,8 +377,8 @@ void DisplayController::pickAt(const QPoint& pos) {
     if (actor == previewActor_.Get()) {
         const Id node = cellId(actor, kNodeIdArray, hit.cell);
         const BuiltHlod& built = model_->built();
-        if (node < built.build->tree.nodes.size() && built.build->tree.nodes[node].isLeaf())
-            model_->selectInstance(built.build->tree.nodes[node].instance);
+        if (node < built.build->tree->nodes.size() && built.build->tree->nodes[node].isLeaf())
+            model_->selectInstance(built.build->tree->nodes[node].instance);
         else
             model_->selectClusterNode(node);
         return;

@@ -13,12 +13,22 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "widgets/StudioModel.h"
+#include "widgets/compare/UseConfiguration.h"
+#include "widgets/doc/UndoAdapter.h"
+
 namespace hlod::widgets {
 
-ExportDialog::ExportDialog(ExportRequest request, const QString& folder, QWidget* parent)
-    : QDialog(parent), request_(std::move(request)), exporter_(new PackageExporter(this)) {
-    setWindowTitle(tr("Export Package"));
-    folder_ = new QLineEdit(folder);
+ExportDialog::ExportDialog(UndoAdapter& undo, StudioModel* model, NodeId exportNode,
+                           const QString& folder, QWidget* parent)
+    : QDialog(parent), undo_(undo), model_(model), node_(exportNode) {
+    const PipelineGraph& g = undo_.document().graph();
+    const bool known = g.hasNode(node_);
+    const QString label = known ? QString::fromStdString(describeNode(g.node(node_))) : QString();
+    setWindowTitle(tr("Export Package — %1").arg(label));
+    const QString output =
+        known ? QString::fromStdString(paramText(g.node(node_).params, "output")) : QString();
+    folder_ = new QLineEdit(output.isEmpty() ? folder : output);
     folder_->setObjectName(QStringLiteral("exportFolder"));
     folder_->setToolTip(tr("The package folder: tileset.json, tiles/*.glb and hlod.json"));
     browse_ = new QPushButton(tr("Browse…"));
@@ -28,12 +38,14 @@ ExportDialog::ExportDialog(ExportRequest request, const QString& folder, QWidget
     row->addWidget(browse_);
     dlod_ = new QCheckBox(tr("Include the DLOD chain statistics (slower)"));
     dlod_->setObjectName(QStringLiteral("exportDlod"));
-    dlod_->setChecked(request_.dlod);
+    dlod_->setChecked(known ? paramBool(g.node(node_).params, "dlod") : true);
     bar_ = new QProgressBar;
     bar_->setObjectName(QStringLiteral("exportProgress"));
     bar_->setRange(0, 1000);
     bar_->setValue(0);
-    status_ = new QLabel;
+    status_ = new QLabel(
+        known ? tr("Branch: %1").arg(model_->branchLabel(g.upstreamOfKind(node_, NodeKind::Bake)))
+              : QString());
     status_->setObjectName(QStringLiteral("exportStatus"));
     status_->setWordWrap(true);
 
@@ -54,10 +66,28 @@ ExportDialog::ExportDialog(ExportRequest request, const QString& folder, QWidget
     layout->addWidget(buttons);
     resize(560, sizeHint().height());
 
-    connect(exporter_, &PackageExporter::progressed, this, &ExportDialog::onProgress);
-    connect(exporter_, &PackageExporter::finished, this, &ExportDialog::onFinished);
-    connect(exporter_, &PackageExporter::failed, this, &ExportDialog::onFailed);
-    connect(exporter_, &PackageExporter::cancelled, this, [this] {
+    connect(model_, &StudioModel::nodeProgress, this,
+            [this](quint32, const QString& stage, qint64 done, qint64 total) {
+                if (!running_) return;
+                status_->setText(total > 0 ? tr("%1 %2/%3").arg(stage).arg(done).arg(total)
+                                           : stage);
+                if (total > 0) {
+                    bar_->setRange(0, 1000);
+                    bar_->setValue(static_cast<int>(1000.0 * double(done) / double(total)));
+                } else {
+                    bar_->setRange(0, 0);
+                }
+            });
+    connect(model_, &StudioModel::runFinished, this, &ExportDialog::onFinished);
+    connect(model_, &StudioModel::buildFailed, this, [this](const QString& message) {
+        if (!running_) return;
+        setRunning(false);
+        bar_->setRange(0, 1000);
+        bar_->setValue(0);
+        status_->setText(message);
+    });
+    connect(model_, &StudioModel::buildCancelled, this, [this] {
+        if (!running_) return;
         setRunning(false);
         status_->setText(tr("Export cancelled; nothing was written"));
     });
@@ -77,52 +107,64 @@ bool ExportDialog::startExport() {
         status_->setText(tr("Choose a folder for the package"));
         return false;
     }
-    ExportRequest request = request_;
-    request.output = folder().toStdString();
-    request.dlod = dlod_->isChecked();
-    if (!exporter_->start(std::move(request))) return false;
-    Q_EMIT exportStarted(folder());
+    if (running_ || model_->building()) return false;
+    const PipelineGraph& g = undo_.document().graph();
+    if (!g.hasNode(node_)) return false;
+    // The node's folder and DLOD choice, as one undoable step (nothing when they are its own).
+    const ParamValues& params = g.node(node_).params;
+    std::vector<std::unique_ptr<SetParameter>> parts;
+    const std::string output = folder().toStdString();
+    if (paramText(params, "output") != output)
+        parts.push_back(std::make_unique<SetParameter>(node_, "output", output));
+    if (paramBool(params, "dlod") != dlod_->isChecked())
+        parts.push_back(std::make_unique<SetParameter>(node_, "dlod", dlod_->isChecked()));
+    if (!parts.empty()) {
+        const std::string text = "Export " + nodeLabel(g.node(node_)) + " to " + output;
+        if (!undo_.execute(std::make_unique<SetParameters>(text, std::move(parts)))) return false;
+    }
     status_->setText(tr("Exporting…"));
     bar_->setRange(0, 0);
     setRunning(true);
+    model_->runExports({node_});
+    if (!model_->building()) { // nothing could start (no scene)
+        setRunning(false);
+        status_->setText(tr("Nothing to export: open a scene first"));
+        return false;
+    }
     return true;
 }
 
 void ExportDialog::reject() {
-    if (exporter_->busy()) {
-        exporter_->cancel(); // cancelled() follows; the dialog stays to say so
+    if (running_) {
+        model_->cancelBuild(); // buildCancelled follows; the dialog stays to say so
         return;
     }
     QDialog::reject();
 }
 
-void ExportDialog::onProgress(const QString& stage, qint64 done, qint64 total) {
-    status_->setText(total > 0 ? tr("%1 %2/%3").arg(stage).arg(done).arg(total) : stage);
-    if (total > 0) {
-        bar_->setRange(0, 1000);
-        bar_->setValue(static_cast<int>(1000.0 * double(done) / double(total)));
-    } else {
-        bar_->setRange(0, 0);
-    }
-}
-
-void ExportDialog::onFinished(const QString& folder, qint64 files, qint64 bytes) {
+void ExportDialog::onFinished() {
+    if (!running_) return;
     setRunning(false);
+    const PipelineGraph& g = undo_.document().graph();
+    const NodeOutput* out = g.hasNode(node_) ? g.output(node_) : nullptr;
+    if (!out || !out->exported || g.status(node_) != NodeStatus::UpToDate) {
+        status_->setText(tr("The export did not finish (the document changed meanwhile)"));
+        return;
+    }
+    const PackageSummary& written = out->exported->written;
+    const QString dir = QString::fromStdString(out->exported->output.string());
     bar_->setRange(0, 1000);
     bar_->setValue(1000);
     status_->setText(
-        tr("Wrote %1 files (%2) to %3").arg(files).arg(QLocale().formattedDataSize(bytes), folder));
+        tr("Wrote %1 files (%2) to %3")
+            .arg(written.files)
+            .arg(QLocale().formattedDataSize(static_cast<qint64>(written.bytes)), dir));
+    Q_EMIT exported(dir, static_cast<qint64>(written.files), static_cast<qint64>(written.bytes));
     accept();
 }
 
-void ExportDialog::onFailed(const QString& message) {
-    setRunning(false);
-    bar_->setRange(0, 1000);
-    bar_->setValue(0);
-    status_->setText(message);
-}
-
 void ExportDialog::setRunning(bool running) {
+    running_ = running;
     folder_->setEnabled(!running);
     browse_->setEnabled(!running);
     dlod_->setEnabled(!running);

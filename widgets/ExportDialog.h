@@ -1,13 +1,18 @@
-// File ▸ Export Package…: choose a folder, then the package of the current build is written in
-// the background (PackageExporter) with a progress bar and Cancel. The dialog stays open when
-// the export fails (message shown in it) and closes itself with accept() when it finished.
+// File ▸ Export Package…: writes the package of one branch by running its Export node through
+// the pipeline graph (the runner `hlod build` uses, StudioModel::runExports), with a progress
+// bar and Cancel. The folder and the DLOD choice are the Export node's parameters: Export sets
+// them on the node as one undoable step (saved with the project; `hlod build PROJECT` writes the
+// same folder), then runs the node; only what is not up to date upstream of it runs.
+// The dialog stays open when the export fails (message shown in it) and closes itself with
+// accept() when it finished. Cancel stops a running export first (the package is written
+// atomically: nothing is left behind).
 // Object names for tests: "exportFolder" (line edit), "exportDlod" (check box), "exportButton",
 // "exportProgress", "exportStatus".
 #pragma once
 
 #include <QDialog>
 
-#include "widgets/PackageExporter.h"
+#include "pipeline/graph/PipelineGraph.h"
 
 class QCheckBox;
 class QLabel;
@@ -17,35 +22,39 @@ class QPushButton;
 
 namespace hlod::widgets {
 
+class StudioModel;
+class UndoAdapter;
+
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    // `request` holds everything but the folder (and the DLOD choice), taken from the dialog.
-    ExportDialog(ExportRequest request, const QString& folder, QWidget* parent = nullptr);
+    // Exports Export node `exportNode` of `undo`'s document; `folder` is proposed when the node
+    // has no output folder yet.
+    ExportDialog(UndoAdapter& undo, StudioModel* model, NodeId exportNode, const QString& folder,
+                 QWidget* parent = nullptr);
 
+    NodeId exportNode() const { return node_; }
     QString folder() const;
     void setFolder(const QString& folder);
-    // Starts the export with the dialog's choices; false when the folder is empty or an export
-    // already runs.
+    // Sets the node's folder and DLOD choice, then starts its run; false when the folder is
+    // empty, a run is going on, or the parameters were refused.
     bool startExport();
-    PackageExporter* exporter() const { return exporter_; }
+    bool running() const { return running_; }
+    void reject() override; // Cancel: stops a running export first
 
 Q_SIGNALS:
-    // An export to `folder` started (the exporter's finished, failed or cancelled follows).
-    void exportStarted(const QString& folder);
-
-protected:
-    void reject() override; // Cancel: stops a running export first
+    // The package was written to `folder`.
+    void exported(const QString& folder, qint64 files, qint64 bytes);
 
 private:
     void browse();
-    void onProgress(const QString& stage, qint64 done, qint64 total);
-    void onFinished(const QString& folder, qint64 files, qint64 bytes);
-    void onFailed(const QString& message);
+    void onFinished();
     void setRunning(bool running);
 
-    ExportRequest request_;
-    PackageExporter* exporter_ = nullptr;
+    UndoAdapter& undo_;
+    StudioModel* model_;
+    NodeId node_;
+    bool running_ = false;
     QLineEdit* folder_ = nullptr;
     QPushButton* browse_ = nullptr;
     QCheckBox* dlod_ = nullptr;

@@ -111,9 +111,14 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
         levels_->horizontalHeaderItem(c)->setToolTip(tips[c]);
     economy_ = note(content);
     summary_ = note(content);
+    branch_ = new QLabel(content);
+    branch_->setObjectName(QStringLiteral("StatsBranch"));
+    branch_->setWordWrap(true);
+    branch_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* column = new QVBoxLayout(content);
     column->setContentsMargins(0, 0, 0, 0);
-    for (QWidget* w : std::initializer_list<QWidget*>{table_, note_, levels_, economy_, summary_})
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{branch_, table_, note_, levels_, economy_, summary_})
         column->addWidget(w);
     column->addStretch(1);
     auto* scroll = new QScrollArea(this);
@@ -129,10 +134,31 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     layout->addWidget(plot_, 1);
     connect(model_, &StudioModel::sceneChanged, this, &StatsPanel::refresh);
     connect(model_, &StudioModel::buildFinished, this, &StatsPanel::refresh);
+    connect(model_, &StudioModel::shownBakeChanged, this, &StatsPanel::refresh);
+    connect(model_, &StudioModel::nodeStatusChanged, this, &StatsPanel::refreshBranch);
     refresh();
 }
 
+void StatsPanel::refreshBranch() {
+    const NodeId shown = model_->shownBake();
+    const PipelineGraph* g = model_->graph();
+    if (shown == kNoNode || !g || !g->hasNode(shown)) {
+        branch_->setText(model_->scene() ? tr("No Bake node is shown: pick a branch in the "
+                                              "toolbar or click a Bake node")
+                                         : QString());
+        return;
+    }
+    const NodeStatus status = g->status(shown);
+    const QString state = !model_->hasBuild()              ? tr("not built yet")
+                          : status == NodeStatus::UpToDate ? tr("up to date")
+                          : status == NodeStatus::Running  ? tr("building; its last build shown")
+                                                           : tr("changed since this build");
+    branch_->setText(
+        tr("<b>Branch:</b> %1 (%2)").arg(model_->branchLabel(shown).toHtmlEscaped(), state));
+}
+
 void StatsPanel::refresh() {
+    refreshBranch();
     const QLocale locale;
     auto fill = [&](int row, const GeometryStats* s) {
         auto text = [&](std::size_t n) {
@@ -162,7 +188,7 @@ void StatsPanel::refresh() {
         return;
     }
     const BuiltHlod& b = model_->built();
-    const BakeResult& bake = b.build->bake;
+    const BakeResult& bake = *b.build->bake;
     const std::size_t proxyTriangles =
         b.hlod.triangles - std::min(b.hlod.triangles, b.original.triangles);
     const QString root = b.share.rootProxy > 0.0
@@ -174,7 +200,7 @@ void StatsPanel::refresh() {
                        .arg(b.hlod.meshes - std::min(b.hlod.meshes, b.original.meshes))
                        .arg(locale.toString(static_cast<qulonglong>(proxyTriangles)))
                        .arg(percent(b.share.allProxies), root));
-    const double ratio = b.build->settings.bake.proxyRatio;
+    const double ratio = b.build->bakeParams.proxyRatio;
     economy_->setText(
         (bake.dissolved == 1 ? tr("Proxy economy: 1 cluster dissolved")
                              : tr("Proxy economy: %1 clusters dissolved").arg(bake.dissolved)) +
@@ -184,8 +210,8 @@ void StatsPanel::refresh() {
             .arg(percent(ratio)));
     summary_->setText(tr("%1: %2 nodes, height %3; %4 proxies baked, %5 reused; built in %6 s")
                           .arg(QString::fromStdString(b.hlod.version))
-                          .arg(b.build->tree.nodes.size())
-                          .arg(b.build->tree.height())
+                          .arg(b.build->tree->nodes.size())
+                          .arg(b.build->tree->height())
                           .arg(bake.baked)
                           .arg(bake.reused)
                           .arg(locale.toString(b.seconds, 'f', 2)));

@@ -1,4 +1,5 @@
-// The statistics dock: the thesis table (triangles, vertices, meshes, size; thesis tables
+// The statistics dock: the branch it is about (the shown Bake node's, "Branch: Cluster #5 →
+// Bake #6 (up to date)"), the thesis table (triangles, vertices, meshes, size; thesis tables
 // 6.2-6.6) for the original scene and the current HLOD, as BakeStats computes them, what the
 // HLOD row counts (the original meshes plus every proxy: what the package stores, not what is
 // drawn at once) next to the proxies' share of the original, the per-level table (level,
@@ -43,6 +44,8 @@ public:
     // The proxy economy's dissolved clusters.
     QLabel* economyLabel() const { return economy_; }
     QLabel* summaryLabel() const { return summary_; }
+    // "Branch: Cluster #5 → Bake #6 (up to date)".
+    QLabel* branchLabel() const { return branch_; }
     StatsPlot* plot() const { return plot_; }
 
     void showFrame(const hlod::widgets::FrameStats& stats);
@@ -50,6 +53,7 @@ public:
 private:
     void refresh();
     void refreshLevels();
+    void refreshBranch();
 
     StudioModel* model_;
     QTableWidget* table_ = nullptr;
@@ -57,6 +61,7 @@ private:
     QTableWidget* levels_ = nullptr;
     QLabel* economy_ = nullptr;
     QLabel* summary_ = nullptr;
+    QLabel* branch_ = nullptr;
     StatsPlot* plot_ = nullptr;
 };
 

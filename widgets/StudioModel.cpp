@@ -6,7 +6,6 @@
 
 #include "pipeline/proxy/ProxyEconomy.h"
 #include "pipeline/view/TreeViews.h"
-#include "widgets/doc/ProjectSession.h"
 
 namespace hlod::widgets {
 
@@ -54,19 +53,26 @@ bool displayModeFromString(const QString& text, DisplayMode& mode) {
     return true;
 }
 
-StudioModel::StudioModel(QObject* parent) : QObject(parent), builder_(new HlodBuilder(this)) {
-    connect(builder_, &HlodBuilder::started, this, &StudioModel::buildStarted);
-    connect(builder_, &HlodBuilder::progressed, this, &StudioModel::buildProgress);
-    connect(builder_, &HlodBuilder::finished, this, &StudioModel::setBuilt);
-    connect(builder_, &HlodBuilder::failed, this, &StudioModel::buildFailed);
-    connect(builder_, &HlodBuilder::cancelled, this, &StudioModel::buildCancelled);
+StudioModel::StudioModel(QObject* parent) : QObject(parent), runner_(new GraphRunner(this)) {
+    connect(runner_, &GraphRunner::started, this, &StudioModel::buildStarted);
+    connect(runner_, &GraphRunner::progressed, this,
+            [this](quint32 node, const QString& stage, qint64 done, qint64 total,
+                   const QString& detail) {
+                Q_EMIT nodeProgress(node, stage, done, total);
+                Q_EMIT buildProgress(stage, done, total, detail);
+            });
+    connect(runner_, &GraphRunner::nodeStatus, this,
+            [this](quint32 node, int) { Q_EMIT nodeStatusChanged(node); });
+    connect(runner_, &GraphRunner::finished, this, &StudioModel::onRunFinished);
+    connect(runner_, &GraphRunner::failed, this, &StudioModel::buildFailed);
+    connect(runner_, &GraphRunner::cancelled, this, &StudioModel::buildCancelled);
 }
 
 StudioModel::~StudioModel() = default;
 
 void StudioModel::setScene(std::shared_ptr<const Scene> scene) {
-    const bool wasBuilding = builder_->busy();
-    builder_->abandon();
+    const bool wasBuilding = runner_->busy();
+    runner_->abandon();
     scene_ = std::move(scene);
     nodeInstances_.clear();
     if (scene_) {
@@ -75,16 +81,10 @@ void StudioModel::setScene(std::shared_ptr<const Scene> scene) {
             if (scene_->instances[i].node < nodeInstances_.size())
                 nodeInstances_[scene_->instances[i].node].push_back(i);
     }
-    frontCache_.reset();
-    selectionTree_.reset();
-    built_ = {};
-    subtreeTriangles_.clear();
-    depths_.clear();
-    leafOfInstance_.clear();
+    kept_.clear();
+    everBuilt_ = false;
+    clearShown();
     labeller_.reset();
-    labels_.clear();
-    keys_.clear();
-    export_ = {};
     selection_ = {};
     if (wasBuilding) Q_EMIT buildCancelled();
     Q_EMIT sceneChanged();
@@ -94,36 +94,128 @@ void StudioModel::setScene(std::shared_ptr<const Scene> scene) {
     setView(view);
 }
 
-void StudioModel::setSettings(const HlodSettings& settings) {
-    settings_ = settings;
-    Q_EMIT settingsChanged();
+void StudioModel::clearShown() {
+    frontCache_.reset();
+    selectionTree_.reset();
+    built_ = {};
+    subtreeTriangles_.clear();
+    depths_.clear();
+    leafOfInstance_.clear();
+    labels_.clear();
+    keys_.clear();
 }
 
-void StudioModel::setDocument(const Document* doc) {
-    document_ = doc;
-    syncSettings();
+void StudioModel::setGraph(PipelineGraph* graph) {
+    if (graph == graph_) return;
+    runner_->abandon();
+    graph_ = graph;
+    kept_.clear();
 }
 
-void StudioModel::syncSettings() {
-    if (document_) setSettings(settingsOf(*document_));
+NodeId StudioModel::shownCluster() const {
+    if (!graph_ || shown_ == kNoNode || !graph_->hasNode(shown_)) return kNoNode;
+    return graph_->upstreamOfKind(shown_, NodeKind::Cluster);
+}
+
+std::vector<NodeId> StudioModel::bakeNodes() const {
+    std::vector<NodeId> out;
+    if (!graph_) return out;
+    const std::vector<NodeId> imports = graph_->nodesOf(NodeKind::Import);
+    if (imports.empty()) return out;
+    for (NodeId bake : graph_->nodesOf(NodeKind::Bake)) {
+        const NodeId import = graph_->upstreamOfKind(bake, NodeKind::Import);
+        if (import != kNoNode && import == imports.front()) out.push_back(bake);
+    }
+    return out;
+}
+
+QString StudioModel::branchLabel(NodeId bake) const {
+    if (!graph_ || !graph_->hasNode(bake)) return {};
+    QString text;
+    for (NodeId id : graph_->branchOf(bake)) {
+        const GraphNode& n = graph_->node(id);
+        if (n.kind == NodeKind::Import) continue;
+        if (!text.isEmpty()) text += QStringLiteral(" → ");
+        text += QString::fromStdString(describeNode(n));
+    }
+    return text;
+}
+
+const BuiltHlod* StudioModel::builtOf(NodeId bake) const {
+    const auto it = kept_.find(bake);
+    return it == kept_.end() ? nullptr : &it->second;
+}
+
+void StudioModel::setShownBake(NodeId bake) {
+    if (graph_ && bake != kNoNode && !graph_->hasNode(bake)) bake = kNoNode;
+    if (bake == shown_) return;
+    shown_ = bake;
+    const BuiltHlod* kept = builtOf(bake);
+    const std::shared_ptr<const NodeOutput> current =
+        graph_ && bake != kNoNode ? graph_->sharedOutput(bake) : nullptr;
+    if (kept && (!current || kept->build == current)) {
+        show(*kept);
+    } else if (current && current->scene == scene_ && current->bake) {
+        // Built before this session kept it (a run of another view of the same graph).
+        show(withStatistics(bake, current));
+    } else {
+        const bool had = hasBuild();
+        clearShown();
+        if (had) {
+            Q_EMIT buildFinished();
+            if (view_.mode != DisplayMode::Original) setMode(DisplayMode::Original);
+        }
+    }
+    Q_EMIT shownBakeChanged();
+}
+
+void StudioModel::startRun(std::vector<NodeId> targets) {
+    if (!scene_ || !graph_ || targets.empty()) return;
+    runner_->start(graph_, std::move(targets));
 }
 
 void StudioModel::build() {
-    if (!scene_) return;
-    syncSettings();
-    builder_->start(scene_, settings_);
+    if (shown_ == kNoNode || !graph_ || !graph_->hasNode(shown_)) return;
+    startRun({shown_});
 }
 
-void StudioModel::cancelBuild() { builder_->cancel(); }
+void StudioModel::buildAll() { startRun(bakeNodes()); }
+
+void StudioModel::runExports(const std::vector<NodeId>& exports) { startRun(exports); }
+
+void StudioModel::cancelBuild() { runner_->cancel(); }
+
+bool StudioModel::exporting() const {
+    if (!graph_) return false;
+    for (NodeId id : runner_->targets())
+        if (graph_->hasNode(id) && graph_->node(id).kind == NodeKind::Export) return true;
+    return false;
+}
+
+void StudioModel::onRunFinished(const std::vector<BuiltHlod>& bakes) {
+    for (const BuiltHlod& b : bakes)
+        setBuilt(b);
+    Q_EMIT runFinished();
+}
 
 void StudioModel::setBuilt(const BuiltHlod& result) {
-    if (result.scene != scene_) return; // built for a scene that is no longer open
+    if (result.scene != scene_ || !result.build) return; // built for a scene no longer open
+    everBuilt_ = true;
+    kept_[result.bakeNode] = result;
+    if (shown_ == kNoNode) {
+        shown_ = result.bakeNode;
+        Q_EMIT shownBakeChanged();
+    }
+    if (result.bakeNode == shown_) show(result);
+}
+
+void StudioModel::show(const BuiltHlod& result) {
     frontCache_.reset();
     selectionTree_.reset();
-    const std::shared_ptr<const HlodBuild> previous = built_.build;
+    const std::shared_ptr<const NodeOutput> previous = built_.build;
     const std::vector<ClusterKey> previousKeys = std::move(keys_);
     built_ = result;
-    const ClusterTree& tree = built_.build->tree;
+    const ClusterTree& tree = *built_.build->tree;
     subtreeTriangles_ = hlod::subtreeTriangles(tree, *scene_);
     depths_ = nodeDepths(tree);
     keys_ = hlod::widgets::clusterKeys(tree);
@@ -135,15 +227,16 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
         if (node.isLeaf()) {
             drawCost[n] = subtreeTriangles_[n];
             if (node.instance < leafOfInstance_.size()) leafOfInstance_[node.instance] = n;
-        } else if (n < built_.build->bake.nodes.size()) {
-            drawCost[n] = built_.build->bake.nodes[n].proxy.triangleCount();
+        } else if (n < built_.build->bake->nodes.size()) {
+            drawCost[n] = built_.build->bake->nodes[n].proxy.triangleCount();
         }
     }
     selectionTree_ = std::make_unique<SelectionTree>(tree, std::move(drawCost),
-                                                     rootHasNoProxy(tree, built_.build->bake));
+                                                     rootHasNoProxy(tree, *built_.build->bake));
     frontCache_ = std::make_unique<FrontCache>(*selectionTree_);
     // The selection follows its clusters into the new tree before any view shows it.
-    StudioSelection selection = carrySelection(previous ? &previous->tree : nullptr, previousKeys);
+    StudioSelection selection =
+        carrySelection(previous ? previous->tree.get() : nullptr, previousKeys);
     if (selection.clusterNodes.empty() && selection.clusterNode != kNoId)
         selection.clusterNodes = {selection.clusterNode};
     const bool selectionMoved = !(selection == selection_);
@@ -154,12 +247,11 @@ void StudioModel::setBuilt(const BuiltHlod& result) {
     Q_EMIT buildFinished();
     if (selectionMoved) Q_EMIT selectionChanged();
     if (levelClamped) Q_EMIT viewChanged();
-    Q_EMIT exportChanged(); // up to date or not, against the new build
 }
 
 StudioSelection StudioModel::carrySelection(const ClusterTree* old,
                                             const std::vector<ClusterKey>& oldKeys) {
-    const ClusterTree& tree = built_.build->tree;
+    const ClusterTree& tree = *built_.build->tree;
     StudioSelection out;
     std::vector<Id> oldNodes = selection_.clusterNodes;
     if (oldNodes.empty() && selection_.clusterNode != kNoId) oldNodes = {selection_.clusterNode};
@@ -212,11 +304,11 @@ StudioSelection StudioModel::carrySelection(const ClusterTree* old,
     return out;
 }
 
-int StudioModel::maxLevel() const { return hasBuild() ? built_.build->tree.height() : 0; }
+int StudioModel::maxLevel() const { return hasBuild() ? built_.build->tree->height() : 0; }
 
 int StudioModel::suggestedLevel() const {
     if (!hasBuild()) return 0;
-    const ClusterTree& tree = built_.build->tree;
+    const ClusterTree& tree = *built_.build->tree;
     for (int level = 1; level < tree.height(); ++level)
         if (nodesAtLevel(tree, level).size() <= 12) return level;
     return tree.height();
@@ -266,13 +358,13 @@ void StudioModel::selectSceneNode(Id node) {
 }
 
 void StudioModel::selectClusterNode(Id node) {
-    if (!hasBuild() || node >= built_.build->tree.nodes.size()) {
+    if (!hasBuild() || node >= built_.build->tree->nodes.size()) {
         clearSelection();
         return;
     }
     StudioSelection s;
     s.clusterNode = node;
-    s.instances = instancesBelow(built_.build->tree, node);
+    s.instances = instancesBelow(*built_.build->tree, node);
     std::sort(s.instances.begin(), s.instances.end());
     if (s.instances.size() == 1) s.sceneNode = scene_->instances[s.instances[0]].node;
     applySelection(std::move(s));
@@ -281,7 +373,7 @@ void StudioModel::selectClusterNode(Id node) {
 void StudioModel::setSelection(const std::vector<Id>& nodes, Id current) {
     StudioSelection s;
     if (hasBuild()) {
-        const ClusterTree& tree = built_.build->tree;
+        const ClusterTree& tree = *built_.build->tree;
         for (Id node : nodes)
             if (node < tree.nodes.size()) s.clusterNodes.push_back(node);
     }
@@ -295,7 +387,7 @@ void StudioModel::setSelection(const std::vector<Id>& nodes, Id current) {
     const bool known = std::binary_search(s.clusterNodes.begin(), s.clusterNodes.end(), current);
     s.clusterNode = known ? current : s.clusterNodes.front();
     for (Id node : s.clusterNodes) {
-        const std::vector<Id> below = instancesBelow(built_.build->tree, node);
+        const std::vector<Id> below = instancesBelow(*built_.build->tree, node);
         s.instances.insert(s.instances.end(), below.begin(), below.end());
     }
     std::sort(s.instances.begin(), s.instances.end());
@@ -355,37 +447,10 @@ void StudioModel::setTintByDepth(bool on) {
     setView(v);
 }
 
-void StudioModel::exportStarted(const QString& folder) {
-    export_ = {ExportState::Status::Running, built_.build, folder, {}};
-    Q_EMIT exportChanged();
-}
-
-void StudioModel::exportFinished(const QString& folder) {
-    export_.status = ExportState::Status::Done;
-    export_.folder = folder;
-    Q_EMIT exportChanged();
-}
-
-void StudioModel::exportFailed(const QString& message) {
-    export_.status = ExportState::Status::Failed;
-    export_.message = message;
-    Q_EMIT exportChanged();
-}
-
-void StudioModel::exportCancelled() {
-    export_ = {};
-    Q_EMIT exportChanged();
-}
-
-bool StudioModel::exportUpToDate() const {
-    return export_.status == ExportState::Status::Done && export_.build &&
-           export_.build == built_.build;
-}
-
 SelectionResult StudioModel::selectLod(const Camera& camera) {
     if (!frontCache_) return {};
     SelectionParams params;
-    params.screenSizePx = built_.build->settings.bake.screen.screenSize;
+    params.screenSizePx = built_.build->bakeParams.screen.screenSize;
     return frontCache_->select(camera, params);
 }
 

@@ -1,12 +1,16 @@
-// The editor's one owner of state: the open scene, the HLOD settings, the current HLOD build
-// (cluster tree, proxies, statistics), the selection and the display options. Widgets (trees,
-// viewport display, panels) show what it holds and change it through its functions; they keep
-// no pipeline state of their own.
+// The editor's one owner of state: the open scene, the Bake node whose HLOD is shown and its
+// build (cluster tree, proxies, statistics), the selection and the display options. Widgets
+// (trees, viewport display, panels) show what it holds and change it through its functions; they
+// keep no pipeline state of their own.
 //
-// Builds run in the background (HlodBuilder); the model forwards their progress and keeps the
-// result only when a build finishes for the scene that is still open. A new scene drops the
-// build and the selection. The runtime LOD selection of the HLOD preview (SelectionTree +
-// FrontCache over the current build) lives here too, so every view of it agrees.
+// Builds are runs of the pipeline graph (setGraph: the document's, or a comparison pane's own),
+// in the background (GraphRunner): build() runs the shown Bake node, buildAll() every Bake node
+// of the open scene, runExports() Export nodes (packages). Each run brings its statuses into the
+// graph node by node (the Pipeline dock shows them), and every Bake node it built is kept with
+// its statistics, so showing another branch (setShownBake) shows its last build at once. The
+// model shows a build only when it was made from the scene that is still open. A new scene drops
+// the builds and the selection. The runtime LOD selection of the HLOD preview (SelectionTree +
+// FrontCache over the shown build) lives here too, so every view of it agrees.
 // Selection: a set of scene instances, plus the scene node and cluster node it came from (or
 // that correspond to it: picking an instance selects its scene node and its cluster leaf).
 // Several cluster nodes can be selected at once (setSelection(nodes, current): the rows of a
@@ -18,8 +22,6 @@
 // same, and the selection keeps the clusters that still exist; when one is gone (split, moved
 // into), the largest clusters holding only the selected meshes are selected instead. The
 // selection is settled before buildFinished, so every view shows the new tree with it.
-// Export: the last package written from a build (exportState()), so the Pipeline dock can tell
-// whether the package is up to date with the shown build.
 #pragma once
 
 #include <memory>
@@ -28,14 +30,11 @@
 #include <QObject>
 #include <QString>
 
-#include "pipeline/doc/HlodBuild.h"
+#include <map>
+
 #include "pipeline/select/LodSelection.h"
 #include "widgets/ClusterIdentity.h"
-#include "widgets/HlodBuilder.h"
-
-namespace hlod {
-class Document;
-}
+#include "widgets/GraphRunner.h"
 
 namespace hlod::widgets {
 
@@ -62,15 +61,6 @@ struct StudioSelection {
     bool operator==(const StudioSelection&) const = default;
 };
 
-// The last package export of this session (File ▸ Export Package).
-struct ExportState {
-    enum class Status { None, Running, Done, Failed };
-    Status status = Status::None;
-    std::shared_ptr<const HlodBuild> build; // what was (is being) exported
-    QString folder;
-    QString message; // the error of a failed export
-};
-
 class StudioModel : public QObject {
     Q_OBJECT
 public:
@@ -80,27 +70,51 @@ public:
     void setScene(std::shared_ptr<const Scene> scene);
     const std::shared_ptr<const Scene>& scene() const { return scene_; }
 
-    const HlodSettings& settings() const { return settings_; }
-    void setSettings(const HlodSettings& settings);
-    // The document whose parameters and hand edits the builds use (DESIGN.md: the document is
-    // the one source of truth); null (the default) builds with setSettings()' values. The
-    // document must outlive the model or be unset first.
-    void setDocument(const Document* doc);
-    // Copies the document's settings (settingsOf, ProjectSession.h) into settings().
-    void syncSettings();
+    // The graph the model runs and shows Bake nodes of (not owned: it must outlive the model
+    // or be unset first). Setting another one drops the kept builds.
+    void setGraph(PipelineGraph* graph);
+    PipelineGraph* graph() const { return graph_; }
 
-    // Starts a build of the open scene with the current settings, taken from the document when
-    // one is set (no-op without a scene).
+    // The Bake node whose HLOD is shown (kNoNode: none). Its last build is shown at once when
+    // there is one (kept from a run of this session, or the graph's up-to-date output); else
+    // nothing is (hasBuild() false) until it is built. Emits shownBakeChanged.
+    void setShownBake(NodeId bake);
+    NodeId shownBake() const { return shown_; }
+    // The Cluster node upstream of the shown Bake node (kNoNode when none): the one hand edits
+    // act on.
+    NodeId shownCluster() const;
+    // The Bake nodes the editor can show: those of the graph fed by its first Import node (the
+    // open scene), ascending.
+    std::vector<NodeId> bakeNodes() const;
+    // "Cluster #5 → Bake #6" (names included): the branch of a Bake node, as views name it.
+    QString branchLabel(NodeId bake) const;
+
+    // Runs the shown Bake node / every node of bakeNodes() / the Export nodes `exports` (no-op
+    // without a scene or a graph, or with nothing to run).
     void build();
+    void buildAll();
+    void runExports(const std::vector<NodeId>& exports);
     void cancelBuild();
-    bool building() const { return builder_->busy(); }
+    bool building() const { return runner_->busy(); }
+    // The nodes the running run was asked for (empty when idle).
+    const std::vector<NodeId>& runTargets() const { return runner_->targets(); }
+    // Whether the running run brings `node` up to date as the graph defines it now.
+    bool runCovers(NodeId node) const { return runner_->covers(node); }
+    // Whether the running run writes packages (one of its targets is an Export node).
+    bool exporting() const;
+    // Whether a run of this session built something for the open scene (AutoRebuild starts only
+    // after that).
+    bool everBuilt() const { return everBuilt_; }
 
-    // Adopts a finished build (what a background build delivers; also a build made elsewhere,
-    // e.g. read back or made by a test). Ignored unless it was made from the open scene.
+    // Adopts a finished build of a Bake node (what a run delivers; also a build made elsewhere,
+    // e.g. by a test), keeps it for its node and shows it when it is of the shown node (or no
+    // node is shown: it becomes the shown one). Ignored unless it was made from the open scene.
     void setBuilt(const BuiltHlod& result);
     bool hasBuild() const { return built_.build != nullptr; }
-    // The current build; its pointers are null before the first finished build.
+    // The shown build; its pointers are null before one exists.
     const BuiltHlod& built() const { return built_; }
+    // The kept build of `bake` (nullptr when none).
+    const BuiltHlod* builtOf(NodeId bake) const;
     // Per cluster node: original triangles of its subtree; its depth from the root.
     const std::vector<std::uint64_t>& subtreeTriangles() const { return subtreeTriangles_; }
     const std::vector<int>& depths() const { return depths_; }
@@ -135,28 +149,31 @@ public:
     // Empty without a build.
     SelectionResult selectLod(const Camera& camera);
 
-    // Export of the current build: started (Running), finished to `folder` (Done), failed.
-    void exportStarted(const QString& folder);
-    void exportFinished(const QString& folder);
-    void exportFailed(const QString& message);
-    void exportCancelled(); // back to no export
-    const ExportState& exportState() const { return export_; }
-    // A package of exactly the shown build has been written.
-    bool exportUpToDate() const;
-
 Q_SIGNALS:
     void sceneChanged();
-    void settingsChanged();
+    void shownBakeChanged();
+    // A run started (any run: a build, all branches, exports).
     void buildStarted();
     void buildProgress(const QString& stage, qint64 done, qint64 total, const QString& detail);
+    // Progress of one node's step during a run.
+    void nodeProgress(quint32 node, const QString& stage, qint64 done, qint64 total);
+    // A status of a run was taken into the graph.
+    void nodeStatusChanged(quint32 node);
+    // The shown build was replaced (a run, setBuilt, another Bake node shown).
     void buildFinished();
+    // A run ended well (after buildFinished when it built the shown node), failed, or was
+    // cancelled.
+    void runFinished();
     void buildFailed(const QString& message);
     void buildCancelled();
     void selectionChanged();
     void viewChanged();
-    void exportChanged();
 
 private:
+    void startRun(std::vector<NodeId> targets);
+    void onRunFinished(const std::vector<BuiltHlod>& bakes);
+    void show(const BuiltHlod& result);
+    void clearShown();
     void applySelection(StudioSelection selection);
     void setView(const ViewOptions& view);
     std::vector<Id> instancesBelowSceneNode(Id node) const;
@@ -165,9 +182,11 @@ private:
 
     std::shared_ptr<const Scene> scene_;
     std::vector<std::vector<Id>> nodeInstances_; // per scene node: instances placed on it
-    HlodSettings settings_;
-    const Document* document_ = nullptr;
-    HlodBuilder* builder_ = nullptr;
+    PipelineGraph* graph_ = nullptr;
+    NodeId shown_ = kNoNode;
+    GraphRunner* runner_ = nullptr;
+    bool everBuilt_ = false;
+    std::map<NodeId, BuiltHlod> kept_; // the last build of each Bake node, this scene
     BuiltHlod built_;
     std::vector<std::uint64_t> subtreeTriangles_;
     std::vector<int> depths_;
@@ -175,7 +194,6 @@ private:
     ClusterLabels labeller_;
     std::vector<int> labels_;
     std::vector<ClusterKey> keys_;
-    ExportState export_;
     std::unique_ptr<SelectionTree> selectionTree_;
     std::unique_ptr<FrontCache> frontCache_; // refers to *selectionTree_
     StudioSelection selection_;

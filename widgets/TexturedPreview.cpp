@@ -84,10 +84,11 @@ vtkSmartPointer<vtkMatrix4x4> toVtk(const glm::dmat4& m) {
 
 TexturedPreview::~TexturedPreview() { clear(); }
 
-bool TexturedPreview::draws(const Scene& scene, const HlodBuild& build, Id n) {
-    if (n >= build.tree.nodes.size()) return false;
-    const ClusterNode& node = build.tree.nodes[n];
-    if (!node.isLeaf()) return n < build.bake.nodes.size() && build.bake.nodes[n].proxy.hasAtlas();
+bool TexturedPreview::draws(const Scene& scene, const NodeOutput& build, Id n) {
+    if (n >= build.tree->nodes.size()) return false;
+    const ClusterNode& node = build.tree->nodes[n];
+    if (!node.isLeaf())
+        return n < build.bake->nodes.size() && build.bake->nodes[n].proxy.hasAtlas();
     if (node.instance >= scene.instances.size()) return false;
     const Mesh& mesh = scene.meshes[scene.instances[node.instance].mesh];
     return mesh.uvs.size() == mesh.positions.size() && !mesh.indices.empty() &&
@@ -100,13 +101,13 @@ vtkTexture* TexturedPreview::textureFor(const RgbaImage& image) {
     return texture;
 }
 
-vtkActor* TexturedPreview::actorFor(const Scene& scene, const HlodBuild& build, Id n) {
+vtkActor* TexturedPreview::actorFor(const Scene& scene, const NodeOutput& build, Id n) {
     auto& actor = actors_[n];
     if (actor) return actor;
     actor = vtkSmartPointer<vtkActor>::New();
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetColorModeToDirectScalars();
-    const ClusterNode& node = build.tree.nodes[n];
+    const ClusterNode& node = build.tree->nodes[n];
     if (node.isLeaf()) {
         const MeshInstance& inst = scene.instances[node.instance];
         const Mesh& mesh = scene.meshes[inst.mesh];
@@ -123,7 +124,7 @@ vtkActor* TexturedPreview::actorFor(const Scene& scene, const HlodBuild& build, 
         actor->SetTexture(textureFor(*scene.textureImage(mesh.material)));
         applyMaterialLook(*actor, materialLookOf(scene, mesh.material, true));
     } else {
-        const ProxyMesh& proxy = build.bake.nodes[n].proxy;
+        const ProxyMesh& proxy = build.bake->nodes[n].proxy;
         mapper->SetInputData(
             makePoly(proxy.positions, proxy.normals, proxy.uvs, proxy.indices, nullptr, {}));
         mapper->SetScalarVisibility(false);
@@ -150,7 +151,7 @@ vtkActor* TexturedPreview::actorFor(const Scene& scene, const HlodBuild& build, 
     return actor;
 }
 
-void TexturedPreview::show(const Scene& scene, const HlodBuild& build,
+void TexturedPreview::show(const Scene& scene, const NodeOutput& build,
                            const std::vector<Id>& drawList, bool enabled) {
     if (builtFor_ != &build) {
         clear();

@@ -17,7 +17,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTexture.h>
 
-#include "pipeline/doc/HlodBuild.h"
+#include "pipeline/graph/PipelineGraph.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod::widgets {
@@ -30,10 +30,10 @@ public:
     TexturedPreview& operator=(const TexturedPreview&) = delete;
 
     // True when node `n` of `build` is drawn here (an atlas proxy or a textured leaf).
-    static bool draws(const Scene& scene, const HlodBuild& build, Id n);
+    static bool draws(const Scene& scene, const NodeOutput& build, Id n);
 
     // Shows exactly the nodes of `drawList` this class draws (none when `enabled` is false).
-    void show(const Scene& scene, const HlodBuild& build, const std::vector<Id>& drawList,
+    void show(const Scene& scene, const NodeOutput& build, const std::vector<Id>& drawList,
               bool enabled);
     void hide();
 
@@ -41,12 +41,12 @@ public:
     Id nodeOf(const vtkActor* actor) const;
 
 private:
-    vtkActor* actorFor(const Scene& scene, const HlodBuild& build, Id n);
+    vtkActor* actorFor(const Scene& scene, const NodeOutput& build, Id n);
     vtkTexture* textureFor(const RgbaImage& image);
     void clear();
 
     vtkSmartPointer<vtkRenderer> renderer_; // kept alive: the viewport may go first
-    const HlodBuild* builtFor_ = nullptr;
+    const NodeOutput* builtFor_ = nullptr;
     std::map<Id, vtkSmartPointer<vtkActor>> actors_;
     std::map<const vtkActor*, Id> nodes_;
     std::map<const RgbaImage*, vtkSmartPointer<vtkTexture>> textures_;

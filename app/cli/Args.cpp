@@ -47,7 +47,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
 namespace {
 
 std::set<std::string> valueFlagsOf(const CommandSpec& c) {
-    std::set<std::string> out = paramValueFlags(c.kinds);
+    std::set<std::string> out = paramValueFlags(c.kinds, c.params);
     for (const OptionSpec& o : c.options) {
         if (o.value.empty()) continue;
         out.insert(o.flag);
@@ -57,7 +57,7 @@ std::set<std::string> valueFlagsOf(const CommandSpec& c) {
 }
 
 std::set<std::string> switchesOf(const CommandSpec& c) {
-    std::set<std::string> out = paramSwitches(c.kinds);
+    std::set<std::string> out = paramSwitches(c.kinds, c.params);
     for (const OptionSpec& o : c.options)
         if (o.value.empty()) out.insert(o.flag);
     return out;
@@ -114,35 +114,40 @@ int Args::integer(const std::string& name, int fallback, int lo, int hi) const {
 
 namespace {
 
-bool ofKinds(const ParamDecl& d, const std::vector<NodeKind>& kinds) {
-    return !d.cliFlag.empty() && std::find(kinds.begin(), kinds.end(), d.node) != kinds.end();
+bool ofKinds(const ParamDecl& d, const std::vector<NodeKind>& kinds,
+             const std::vector<std::string>& keys) {
+    return !d.cliFlag.empty() && (std::find(kinds.begin(), kinds.end(), d.node) != kinds.end() ||
+                                  std::find(keys.begin(), keys.end(), d.key) != keys.end());
 }
 
 } // namespace
 
-std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds) {
+std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds,
+                                      const std::vector<std::string>& keys) {
     std::set<std::string> out;
     for (const ParamDecl& d : parameterDeclarations()) {
-        if (!ofKinds(d, kinds) || d.type == ParamType::Bool) continue;
+        if (!ofKinds(d, kinds, keys) || d.type == ParamType::Bool) continue;
         out.insert(d.cliFlag);
         if (!d.cliAlias.empty()) out.insert(d.cliAlias);
     }
     return out;
 }
 
-std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds) {
+std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds,
+                                    const std::vector<std::string>& keys) {
     std::set<std::string> out;
     for (const ParamDecl& d : parameterDeclarations()) {
-        if (ofKinds(d, kinds) && d.type == ParamType::Bool) out.insert(d.cliFlag);
+        if (ofKinds(d, kinds, keys) && d.type == ParamType::Bool) out.insert(d.cliFlag);
     }
     return out;
 }
 
 std::vector<std::pair<const ParamDecl*, ParamValue>>
-paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds) {
+paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds,
+               const std::vector<std::string>& keys) {
     std::vector<std::pair<const ParamDecl*, ParamValue>> out;
     for (const ParamDecl& d : parameterDeclarations()) {
-        if (!ofKinds(d, kinds)) continue;
+        if (!ofKinds(d, kinds, keys)) continue;
         if (d.type == ParamType::Bool) {
             const bool on = !d.cliNegated;
             if (args.has(d.cliFlag))

@@ -37,15 +37,18 @@ private:
 };
 
 // CLI flags derived from the parameter declarations (pipeline/graph/Parameters.h): the flags
-// (and aliases) of the parameters of `kinds` that take a value, and the switches (Bool
-// parameters: `--no-cache` sets `cache` to false).
-std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds);
-std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds);
+// (and aliases) of the parameters of `kinds`, and of those named in `keys`, that take a value,
+// and the switches (Bool parameters: `--no-cache` sets `cache` to false).
+std::set<std::string> paramValueFlags(const std::vector<NodeKind>& kinds,
+                                      const std::vector<std::string>& keys = {});
+std::set<std::string> paramSwitches(const std::vector<NodeKind>& kinds,
+                                    const std::vector<std::string>& keys = {});
 
-// The parameters of `kinds` given on the command line, parsed and validated against their
-// declarations; throws hlod::Error(InvalidArgument) naming the flag ("--k must be within
-// [0, 16], got 20").
+// The parameters of `kinds` (and those named in `keys`) given on the command line, parsed and
+// validated against their declarations; throws hlod::Error(InvalidArgument) naming the flag
+// ("--k must be within [0, 16], got 20").
 std::vector<std::pair<const ParamDecl*, ParamValue>>
-paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds);
+paramsFromArgs(const Args& args, const std::vector<NodeKind>& kinds,
+               const std::vector<std::string>& keys = {});
 
 } // namespace hlod::cli

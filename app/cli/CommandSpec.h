@@ -30,6 +30,9 @@ struct CommandSpec {
     std::vector<std::pair<std::string, std::string>> operands; // name, meaning
     std::vector<NodeKind> kinds;                               // parameters whose flags it takes
     std::vector<OptionSpec> options;                           // its own flags
+    // Single declared parameters (by key) it takes besides those of `kinds`: `hlod bench` bakes
+    // with a few Bake and Cluster parameters, checked and documented by their declarations.
+    std::vector<std::string> params = {};
 };
 
 // Every subcommand, in help order; the one named `name` (nullptr / throws InvalidArgument).

@@ -12,6 +12,10 @@ namespace {
 
 const OptionSpec kJson{"--json", "", "", "Print machine-readable JSON on stdout instead of text.",
                        ""};
+const OptionSpec kExport{"--export", "", "ID|NAME",
+                         "The Export node of a project to run, by id (7 or #7) or by the name "
+                         "given in the editor; without it every Export node runs.",
+                         ""};
 
 std::vector<CommandSpec> makeCommands() {
     using N = NodeKind;
@@ -53,7 +57,9 @@ std::vector<CommandSpec> makeCommands() {
                  "disk by content hash) and writes the 3D Tiles package to DIR, then prints the "
                  "thesis-style table (triangles, vertices, meshes, size) for the original, the "
                  "DLOD chain and the HLOD. A project saved by the editor builds as saved, hand "
-                 "edits included; flags given here override the project's values.",
+                 "edits included, every branch (each Export node) into its own output folder "
+                 "(relative to the project), with one table per branch; -o sets the folder when "
+                 "one Export runs. Flags given here override the project's values.",
                  {scene,
                   {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
                                        "and hand edits)."}},
@@ -66,6 +72,7 @@ std::vector<CommandSpec> makeCommands() {
                    "--shard whose --cache holds its plan is the final step: it checks every "
                    "shard has finished, bakes the nodes above the cut and writes the package.",
                    ""},
+                  kExport,
                   kJson}});
     v.push_back({"plan",
                  runPlan,
@@ -82,7 +89,7 @@ std::vector<CommandSpec> makeCommands() {
                   {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
                                        "and hand edits)."}},
                  {N::Import, N::Cluster, N::Bake},
-                 {{"--shards", "", "N", "Number of shards (1 to 100000).", ""}, kJson}});
+                 {{"--shards", "", "N", "Number of shards (1 to 100000).", ""}, kExport, kJson}});
     v.push_back(
         {"bench",
          runBench,
@@ -99,24 +106,11 @@ std::vector<CommandSpec> makeCommands() {
            "Comma-separated configurations: original, dlod, sphere, aabb0, aabb1, aabb2, "
            "octree, or all.",
            "all"},
-          {"--screen-size", "", "PX", "Screen size S the proxies are baked for (1 to 100000 px).",
-           "300 px"},
-          {"--proxy-ratio", "", "RHO",
-           "Proxy economy: a cluster keeps its proxy only when it has at most this fraction of "
-           "the triangles it replaces (0.05 to 1).",
-           "0.35"},
-          {"--level-growth", "", "G",
-           "Sphere and AABB trees: each level at least G times wider than the one below (1 to "
-           "16; 1 keeps every merge).",
-           "2"},
           {"--path", "", "FILE.json", "Camera path to fly instead of the generated one.", ""},
-          {"--threads", "", "N", "Baking threads (0 to 1024; 0 = all hardware threads).", "0"},
           {"--shading", "", "geometry|colour|textured",
            "geometry: grey, lit; colour: the materials' base colours; textured: base colour "
            "factor x texture x vertex colour, cut-outs honoured.",
            "geometry"},
-          {"--proxy-textures", "", "on|off",
-           "Bake a base-colour atlas per proxy (on) or keep vertex colours only (off).", "on"},
           {"--draw", "", "package|nodes",
            "How HLOD is drawn: package: the exported tiles as a 3D Tiles runtime draws them (a "
            "leaf group's meshes merged per look, one draw each); nodes: one draw per selected "
@@ -125,10 +119,9 @@ std::vector<CommandSpec> makeCommands() {
           {"--frame-images", "", "",
            "Also write every frame of every configuration as frames/NNNNN-KEY.png and its "
            "camera as frames/NNNNN-camera.json.",
-           ""},
-          {"--cache", "", "DIR", "Proxy cache folder (the one hlod build uses by default).",
-           "~/.cache/hlod/proxies"},
-          {"--no-cache", "", "", "Bake every proxy again instead of using the proxy cache.", ""}}});
+           ""}},
+          {"level_growth", "screen_size", "proxy_ratio", "proxy_textures", "threads", "cache",
+           "cache_dir"}});
     return v;
 }
 

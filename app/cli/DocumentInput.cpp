@@ -2,6 +2,8 @@
 // DocumentInput.h.
 #include "DocumentInput.h"
 
+#include <algorithm>
+
 #include <sys/resource.h>
 
 #include "pipeline/core/Error.h"
@@ -32,11 +34,75 @@ Document documentFromArgs(const std::vector<std::string>& positionals, const Par
     }();
     PipelineGraph& graph = doc.graph();
     for (const auto& [decl, value] : flags) {
-        for (NodeId id : graph.nodeIds()) {
-            if (graph.node(id).kind == decl->node) graph.setParam(id, decl->key, value);
-        }
+        if (decl->key == "output") continue; // one Export's: pickExports
+        for (NodeId id : graph.nodesOf(decl->node))
+            graph.setParam(id, decl->key, value);
     }
     return doc;
+}
+
+std::optional<std::string> takeOutputFlag(ParamFlags& flags) {
+    std::optional<std::string> out;
+    std::erase_if(flags, [&](const auto& flag) {
+        if (flag.first->key != "output") return false;
+        out = std::get<std::string>(flag.second);
+        return true;
+    });
+    return out;
+}
+
+namespace {
+
+std::string listExports(const PipelineGraph& graph) {
+    std::string list;
+    for (NodeId id : graph.nodesOf(NodeKind::Export))
+        list += (list.empty() ? "" : ", ") + describeNode(graph.node(id));
+    return list;
+}
+
+NodeId findExport(const PipelineGraph& graph, const std::string& pick) {
+    std::string digits = pick.starts_with('#') ? pick.substr(1) : pick;
+    const bool number =
+        !digits.empty() && digits.size() < 10 &&
+        std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    for (NodeId id : graph.nodeIds()) {
+        const GraphNode& n = graph.node(id);
+        const bool named =
+            (number && id == std::stoul(digits)) || (!n.name.empty() && n.name == pick);
+        if (!named) continue;
+        if (n.kind != NodeKind::Export) {
+            throw Error(ErrorCode::InvalidArgument, "--export " + pick + ": " + describeNode(n) +
+                                                        " is not an Export node (" +
+                                                        listExports(graph) + ")");
+        }
+        return id;
+    }
+    throw Error(ErrorCode::InvalidArgument,
+                "--export " + pick +
+                    " names no node of the project (its Export nodes: " + listExports(graph) + ")");
+}
+
+} // namespace
+
+std::vector<NodeId> pickExports(PipelineGraph& graph, const std::optional<std::string>& pick,
+                                const std::optional<std::string>& output) {
+    std::vector<NodeId> exports = graph.nodesOf(NodeKind::Export);
+    if (exports.empty()) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "the project has no Export node: add one after a Bake node (it writes the "
+                    "package)");
+    }
+    if (pick) exports = {findExport(graph, *pick)};
+    if (!output) return exports;
+    if (exports.size() != 1) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "-o names one output folder, but the project has " +
+                        std::to_string(exports.size()) + " Export nodes (" + listExports(graph) +
+                        "): pick one with --export ID|NAME, or leave out -o to write each to its "
+                        "own folder");
+    }
+    graph.setParam(exports.front(), "output", *output);
+    return exports;
 }
 
 ProcessUsage processUsage() {

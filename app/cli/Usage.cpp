@@ -151,10 +151,14 @@ std::string commandHelp(const CommandSpec& c) {
             out += optionLine(name, meaning);
         out += "\n";
     }
-    for (NodeKind kind : c.kinds) {
+    for (NodeKind kind : {NodeKind::Import, NodeKind::Cluster, NodeKind::Bake, NodeKind::Export}) {
+        const bool whole = std::find(c.kinds.begin(), c.kinds.end(), kind) != c.kinds.end();
         std::string lines;
-        for (const ParamDecl* d : parametersOf(kind))
-            if (!d->cliFlag.empty()) lines += optionLine(flagOf(*d), describe(*d));
+        for (const ParamDecl* d : parametersOf(kind)) {
+            const bool taken =
+                whole || std::find(c.params.begin(), c.params.end(), d->key) != c.params.end();
+            if (taken && !d->cliFlag.empty()) lines += optionLine(flagOf(*d), describe(*d));
+        }
         if (!lines.empty()) out += std::string(kindTitle(kind)) + ":\n" + lines + "\n";
     }
     if (!c.options.empty()) {

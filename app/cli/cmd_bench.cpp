@@ -2,6 +2,10 @@
 // [--screen-size PX] [--path FILE.json] [--threads N] [--shading geometry|colour|textured]
 // [--proxy-textures on|off] [--draw package|nodes] [--frame-images]`:
 // the thesis' evaluation on one scene (see bench/BenchRun.h for what is measured and how).
+// The scene is read by the pipeline graph's Import step and every HLOD configuration is a
+// branch of that graph; the pipeline flags (--screen-size, --proxy-ratio, --level-growth,
+// --threads, --proxy-textures, --no-cache, --cache and the import options) are the parameter
+// declarations' (CommandTable.cpp), so their ranges and defaults are those of `hlod build`.
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
 // side_by_side_*.png (and frames/*.png with --frame-images). Needs an X display (xvfb-run -a on a
 // headless machine).
@@ -12,7 +16,7 @@
 
 #include "Args.h"
 #include "Commands.h"
-#include "SceneInput.h"
+#include "ProgressBar.h"
 #include "pipeline/core/Error.h"
 
 #ifdef HLOD_HAVE_VTK
@@ -23,15 +27,6 @@ namespace hlod::cli {
 
 #ifdef HLOD_HAVE_VTK
 namespace {
-
-// Same user-level proxy cache as `hlod build`.
-std::filesystem::path benchCacheDir() {
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return std::filesystem::path(xdg) / "hlod" / "proxies";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".cache" / "hlod" / "proxies";
-    return {};
-}
 
 std::vector<std::string> parseConfigs(const std::string& list) {
     std::vector<std::string> out;
@@ -77,6 +72,8 @@ int runBench(const CommandArgs& argv) {
     throw Error(ErrorCode::InvalidArgument,
                 "this hlod was built without VTK (HLOD_BUILD_GUI=OFF): bench cannot render");
 #else
+    const CommandSpec& spec = command("bench");
+    const auto flags = paramsFromArgs(args, spec.kinds, spec.params); // usage errors first
     BenchOptions o;
     const auto out = args.value("--out") ? args.value("--out") : args.value("-o");
     if (!out || out->empty())
@@ -85,11 +82,7 @@ int runBench(const CommandArgs& argv) {
     o.frames = args.integer("--frames", o.frames, 2, 100000);
     parseSize(args.value("--size", "640x360"), o.width, o.height);
     o.configs = parseConfigs(args.value("--configs", "all"));
-    o.screenSize = args.number("--screen-size", o.screenSize, 1.0, 100000.0);
-    o.proxyRatio = args.number("--proxy-ratio", o.proxyRatio, 0.05, 1.0);
-    o.levelGrowth = args.number("--level-growth", o.levelGrowth, 1.0, 16.0);
     if (auto p = args.value("--path")) o.pathFile = *p;
-    o.threads = args.integer("--threads", 0, 0, 1024);
     const std::string shading = args.value("--shading", "geometry");
     if (shading == "geometry")
         o.shading = Shading::Geometry;
@@ -100,26 +93,30 @@ int runBench(const CommandArgs& argv) {
     else
         throw Error(ErrorCode::InvalidArgument,
                     "--shading must be geometry, colour or textured, not '" + shading + "'");
-    if (!args.has("--no-cache")) o.cacheDir = benchCacheDir();
-    if (auto cache = args.value("--cache"); cache && !args.has("--no-cache")) o.cacheDir = *cache;
-    const std::string textures = args.value("--proxy-textures", "on");
-    if (textures != "on" && textures != "off")
-        throw Error(ErrorCode::InvalidArgument,
-                    "--proxy-textures must be on or off, not '" + textures + "'");
-    o.proxyTextures = textures == "on";
+    o.frameImages = args.has("--frame-images");
     const std::string draw = args.value("--draw", "package");
     if (draw != "package" && draw != "nodes")
         throw Error(ErrorCode::InvalidArgument,
                     "--draw must be package or nodes, not '" + draw + "'");
     o.draw = draw == "package" ? HlodDraw::Package : HlodDraw::Nodes;
     o.frameImages = args.has("--frame-images");
+    PipelineGraph graph;
+    const NodeId import = graph.addNode(NodeKind::Import);
+    graph.setSources(import, std::vector<std::filesystem::path>(args.positionals().begin(),
+                                                                args.positionals().end()));
+    for (const auto& [decl, value] : flags) {
+        if (decl->node == NodeKind::Cluster) o.cluster[decl->key] = value;
+        if (decl->node == NodeKind::Bake) o.bake[decl->key] = value;
+        if (decl->node == NodeKind::Import) graph.setParam(import, decl->key, value);
+    }
     if (const char* d = std::getenv("DISPLAY"); !d || !*d)
         throw Error(ErrorCode::InvalidArgument,
                     "bench renders with VTK, which needs an X display here (Debian's VTK has no "
                     "EGL/OSMesa): DISPLAY is unset; run it under xvfb-run -a");
-    const LoadedScene loaded = loadSceneArgs(args.positionals(), importOptionsFromArgs(args));
-    o.inputs = loaded.inputs;
-    hlod::cli::runBench(loaded.scene, o);
+    ProgressBar bar;
+    graph.run({import}, bar.progress());
+    bar.finish();
+    hlod::cli::runBench(graph, import, o);
     return 0;
 #endif
 }

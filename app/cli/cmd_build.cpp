@@ -2,15 +2,21 @@
 // [--proxy decimate|remesh|sloppy] [--screen-size PX] [--pixel-error PX] [--fov DEG]
 // [--viewport-height PX] [--threads N] [--cache DIR] [--no-cache] [--no-dlod] [--geo LAT,LON,H]
 // [--deflection R] [--brep-unit M] [--compression meshopt|none] [--json]` and `hlod build
-// PROJECT.hlodproj [-o DIR] [flags]`: runs the pipeline graph (pipeline/graph/PipelineGraph.h)
-// headless — import, cluster, bake every inner node's proxy, write the package — then prints the
-// thesis-style statistics table.
+// PROJECT.hlodproj [-o DIR] [--export ID|NAME] [flags]`: runs the pipeline graph
+// (pipeline/graph/PipelineGraph.h) headless — import, cluster, bake every inner node's proxy,
+// write the package — then prints the thesis-style statistics table.
 //
+// Branches: every Export node of a project runs (each path Import -> Cluster -> Bake -> Export
+// is a variant; a shared Import is read once), each writing its package to its own output folder
+// (relative folders in the project are the project's, ProjectFile.h), and a table is printed per
+// branch (--json: one object, or {"branches": [...]} for several). --export picks one Export by
+// id or name; -o sets the output folder of the one Export that runs (refused when several run).
+// A graph the runner cannot run (an input not connected, an Export without a folder, two Exports
+// writing one folder) is refused before anything runs, in one line naming the node.
 // The flags are generated from the parameter declarations (pipeline/graph/Parameters.h); only
-// --json is this command's own. With a project file the project's graph runs as saved, hand
-// edits included; flags given on the command line override the project's values on every
-// node of their kind, and -o overrides the Export node's output folder. Without a project the
-// default graph Import -> Cluster -> Bake -> Export runs over the SCENE files.
+// --json, --export and --shard are this command's own. Flags given on the command line override
+// the project's values on every node of their kind. Without a project the default graph
+// Import -> Cluster -> Bake -> Export runs over the SCENE files.
 // The summary ends with the package's bytes on disk (allocated blocks) and file count next to
 // the source's (the scene files and every file they reference), and their ratio.
 //
@@ -86,10 +92,26 @@ void printDisk(const ExportResult& ex) {
     std::printf("\n");
 }
 
-void printJson(const NodeOutput& out, const PlanCheck& plan) {
+// The branch that made an Export node's package: "Import #1 -> Cluster #5 -> Bake #6 -> Export
+// #7 'pkg-b'".
+std::string branchText(const PipelineGraph& graph, NodeId exportNode) {
+    std::string text;
+    for (NodeId id : graph.branchOf(exportNode))
+        text += (text.empty() ? "" : " -> ") + describeNode(graph.node(id));
+    return text;
+}
+
+nlohmann::json branchJson(const PipelineGraph& graph, NodeId exportNode) {
+    const GraphNode& n = graph.node(exportNode);
+    return {{"export", exportNode}, {"name", n.name}, {"nodes", graph.branchOf(exportNode)}};
+}
+
+nlohmann::json resultJson(const PipelineGraph& graph, NodeId exportNode, const PlanCheck& plan) {
+    const NodeOutput& out = *graph.output(exportNode);
     const ExportResult& ex = *out.exported;
     nlohmann::json j = buildTreeJson(*out.scene, *out.tree, *out.bake, ex.info);
     j.erase("nodes");
+    j["branch"] = branchJson(graph, exportNode);
     j["output"] = ex.output.string();
     j["output_bytes"] = ex.written.bytes;
     j["package"] = {{"files", ex.written.files},
@@ -115,14 +137,16 @@ void printJson(const NodeOutput& out, const PlanCheck& plan) {
                     {"bake", out.bake->seconds},
                     {"dlod", ex.dlodSeconds},
                     {"write", ex.writeSeconds}};
-    std::cout << j.dump(2) << "\n";
+    return j;
 }
 
-void printSummary(const NodeOutput& out, const PlanCheck& plan) {
+void printSummary(const PipelineGraph& graph, NodeId exportNode, const PlanCheck& plan) {
+    const NodeOutput& out = *graph.output(exportNode);
     const ExportResult& ex = *out.exported;
     const BakeResult& bake = *out.bake;
     const ClusterTree& tree = *out.tree;
     const BakeParams& bp = out.bakeParams;
+    std::printf("branch:       %s\n", branchText(graph, exportNode).c_str());
     std::printf("scene:        ");
     for (const auto& in : out.inputs)
         std::printf("%s ", in.c_str());
@@ -257,25 +281,7 @@ PlanCheck checkPlanBeforeBake(PipelineGraph& graph, NodeId exportNode, const Pro
     return check;
 }
 
-} // namespace
-
-int runBuild(const CommandArgs& argv) {
-    const Args args(argv, command("build"));
-    const ParamFlags flags = paramsFromArgs(args, kAllKinds); // usage errors before any work
-    if (args.has("--shard")) return runShardBuild(args, flags);
-    Document doc = documentFromArgs(args.positionals(), flags);
-    PipelineGraph& graph = doc.graph();
-    const NodeId exportNode = graph.firstOf(NodeKind::Export);
-    if (exportNode == kNoNode)
-        throw Error(ErrorCode::InvalidArgument, "the project has no export node");
-    if (paramText(graph.node(exportNode).params, "output").empty())
-        throw Error(ErrorCode::InvalidArgument, "missing -o DIR (output folder)");
-
-    ProgressBar bar;
-    const PlanCheck plan = checkPlanBeforeBake(graph, exportNode, bar.progress());
-    graph.run({exportNode}, bar.progress());
-    bar.finish();
-    const NodeOutput& out = *graph.output(exportNode);
+void warnDamaged(const NodeOutput& out) {
     if (const std::size_t n = out.bake->damaged; n > 0) {
         std::fprintf(stderr,
                      "hlod build: warning: %zu damaged proxy %s in the cache %s not trusted and "
@@ -283,10 +289,42 @@ int runBuild(const CommandArgs& argv) {
                      n, n == 1 ? "file" : "files", n == 1 ? "was" : "were",
                      n == 1 ? "was" : "were");
     }
+}
+
+} // namespace
+
+int runBuild(const CommandArgs& argv) {
+    const Args args(argv, command("build"));
+    ParamFlags flags = paramsFromArgs(args, kAllKinds); // usage errors before any work
+    if (args.has("--shard")) return runShardBuild(args, flags);
+    const std::optional<std::string> output = takeOutputFlag(flags);
+    Document doc = documentFromArgs(args.positionals(), flags);
+    PipelineGraph& graph = doc.graph();
+    const std::vector<NodeId> exports = pickExports(graph, args.value("--export"), output);
+    graph.checkRunnable(exports); // a graph that cannot run is refused before any work
+
+    ProgressBar bar;
+    std::vector<PlanCheck> plans;
+    for (NodeId exportNode : exports)
+        plans.push_back(checkPlanBeforeBake(graph, exportNode, bar.progress()));
+    graph.run(exports, bar.progress());
+    bar.finish();
+    for (NodeId exportNode : exports)
+        warnDamaged(*graph.output(exportNode));
     if (args.has("--json")) {
-        printJson(out, plan);
-    } else {
-        printSummary(out, plan);
+        if (exports.size() == 1) {
+            std::cout << resultJson(graph, exports[0], plans[0]).dump(2) << "\n";
+        } else {
+            nlohmann::json branches = nlohmann::json::array();
+            for (std::size_t i = 0; i < exports.size(); ++i)
+                branches.push_back(resultJson(graph, exports[i], plans[i]));
+            std::cout << nlohmann::json{{"branches", branches}}.dump(2) << "\n";
+        }
+        return 0;
+    }
+    for (std::size_t i = 0; i < exports.size(); ++i) {
+        if (i > 0) std::printf("\n");
+        printSummary(graph, exports[i], plans[i]);
     }
     return 0;
 }

@@ -1,9 +1,9 @@
 // `hlod plan SCENE... --shards N --cache DIR [import, cluster and bake flags] [--json]` and
-// `hlod plan PROJECT.hlodproj --shards N --cache DIR`: the first step of a distributed bake
-// (issue 21). Imports once, clusters, cuts the tree into N cost-balanced shards and writes the
-// plan into the shared cache folder (pipeline/graph/BakePlan.h): the tree, every shard's slice
-// of the scene and the bake parameters. Then `hlod build --shard I/N --cache DIR` on each
-// machine, and the final `hlod build SCENE... -o PKG --cache DIR` with the same flags.
+// `hlod plan PROJECT.hlodproj [--export ID|NAME] --shards N --cache DIR`: the first step of a
+// distributed bake (issue 21). Imports once, clusters, cuts the tree into N cost-balanced shards
+// and writes the plan into the shared cache folder (pipeline/graph/BakePlan.h): the tree, every
+// shard's slice of the scene and the bake parameters. Then `hlod build --shard I/N --cache DIR` on
+// each machine, and the final `hlod build SCENE... -o PKG --cache DIR` with the same flags.
 #include <cstdio>
 #include <iostream>
 
@@ -21,15 +21,23 @@ namespace {
 
 const std::vector<NodeKind> kPlanKinds{NodeKind::Import, NodeKind::Cluster, NodeKind::Bake};
 
-// The Bake node whose package the final build writes, and the Cluster node feeding it.
-std::pair<NodeId, NodeId> bakeChain(const PipelineGraph& graph) {
-    NodeId bake = kNoNode;
-    if (const NodeId exportNode = graph.firstOf(NodeKind::Export); exportNode != kNoNode)
-        bake = graph.upstreamOf(exportNode);
-    if (bake == kNoNode) bake = graph.firstOf(NodeKind::Bake);
-    const NodeId cluster = bake == kNoNode ? kNoNode : graph.upstreamOf(bake);
-    if (bake == kNoNode || cluster == kNoNode)
-        throw Error(ErrorCode::InvalidArgument, "the project has no Cluster -> Bake chain to plan");
+// The Bake node whose package the final build writes (the branch of the one Export node, or of
+// the one --export picks), and the Cluster node feeding it.
+std::pair<NodeId, NodeId> bakeChain(PipelineGraph& graph, const std::optional<std::string>& pick) {
+    const std::vector<NodeId> exports = pickExports(graph, pick, std::nullopt);
+    if (exports.size() != 1) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "a plan bakes one branch, and the project has " +
+                        std::to_string(exports.size()) +
+                        " Export nodes: pick one with --export ID|NAME");
+    }
+    const NodeId bake = graph.upstreamOfKind(exports[0], NodeKind::Bake);
+    const NodeId cluster = graph.upstreamOfKind(exports[0], NodeKind::Cluster);
+    if (bake == kNoNode || cluster == kNoNode) {
+        throw Error(ErrorCode::InvalidArgument,
+                    describeNode(graph.node(exports[0])) +
+                        " has no Cluster -> Bake chain upstream to plan");
+    }
     return {bake, cluster};
 }
 
@@ -90,7 +98,7 @@ int runPlan(const CommandArgs& argv) {
     const int shards = args.integer("--shards", 1, 1, 100000);
     Document doc = documentFromArgs(args.positionals(), flags);
     PipelineGraph& graph = doc.graph();
-    const auto [bakeNode, clusterNode] = bakeChain(graph);
+    const auto [bakeNode, clusterNode] = bakeChain(graph, args.value("--export"));
     const ParamValues& bakeValues = graph.node(bakeNode).params;
     if (!paramBool(bakeValues, "cache"))
         throw Error(ErrorCode::InvalidArgument, "a plan needs the proxy cache (drop --no-cache)");

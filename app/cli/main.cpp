@@ -1,4 +1,5 @@
-// `hlod`: the headless HLOD Studio. See README.md (CLI usage) and DESIGN.md (CLI contract).
+// `hlod`: the headless HLOD Studio. See README.md (CLI usage) and docs/architecture.md (the CLI
+// runs the pipeline graph; where its contract is described).
 // The commands and their flags are declared in CommandTable.cpp; the help is generated from
 // those declarations and the pipeline's parameter declarations (Usage.h).
 #include <cstdio>

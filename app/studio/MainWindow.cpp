@@ -37,6 +37,7 @@
 #include "widgets/SceneTreeModel.h"
 #include "widgets/StudioModel.h"
 #include "widgets/Viewport.h"
+#include "widgets/compare/CompareView.h"
 #include "widgets/doc/ProjectSession.h"
 
 using hlod::widgets::LoadedScene;
@@ -253,7 +254,67 @@ void MainWindow::openFiles(const QStringList& files) {
     QStringList absolute;
     for (const QString& file : files)
         absolute << QFileInfo(file).absoluteFilePath();
+    reloading_ = false;
+    loadOptions_ = {};
     loader_->load(absolute);
+}
+
+void MainWindow::onDocumentEdited() {
+    // A shown Bake node that was removed (or none shown while there is one): show the first.
+    const std::vector<hlod::NodeId> bakes = model_->bakeNodes();
+    if (!session_->replacing() &&
+        std::find(bakes.begin(), bakes.end(), model_->shownBake()) == bakes.end())
+        model_->setShownBake(bakes.empty() ? hlod::kNoNode : bakes.front());
+    // An edit of the Import node (its files, its import parameters) reads the scene again: what
+    // the view shows is that node's output.
+    if (session_->replacing() || pendingProject_ || !model_->scene() || loader_->busy()) return;
+    const hlod::Document& doc = session_->document();
+    const hlod::NodeId import = doc.importNode();
+    if (import == hlod::kNoNode || doc.graph().definition(import) == loadedImport_) return;
+    reloadScene();
+}
+
+void MainWindow::reloadScene() {
+    const hlod::Document& doc = session_->document();
+    QStringList files;
+    for (const std::filesystem::path& source : doc.sources())
+        files << QString::fromStdString(source.string());
+    reloading_ = true;
+    loadOptions_ = hlod::importOptionsFrom(doc.graph().node(doc.importNode()).params);
+    log_->info(tr("The Import node changed: reading the scene again"));
+    if (model_->everBuilt()) {
+        // Show the shown branch again once the scene is back.
+        const hlod::widgets::DisplayMode mode = model_->view().mode;
+        startup_ = {};
+        startup_.build = true;
+        startup_.mode = mode == hlod::widgets::DisplayMode::Hlod       ? QStringLiteral("hlod")
+                        : mode == hlod::widgets::DisplayMode::Clusters ? QStringLiteral("clusters")
+                                                                       : QStringLiteral("original");
+        startupPending_ = true;
+    }
+    loader_->load(files, loadOptions_);
+}
+
+void MainWindow::adoptLoadedScene(const LoadedScene& result) {
+    hlod::PipelineGraph& g = session_->document().graph();
+    const hlod::NodeId import = session_->document().importNode();
+    if (import == hlod::kNoNode) return;
+    // The step the loader ran: the document's Import node with these files and options.
+    hlod::GraphNode ran = g.node(import);
+    ran.sources.clear();
+    for (const QString& file : result.files)
+        ran.sources.emplace_back(file.toStdString());
+    ran.params = hlod::paramsFrom(loadOptions_);
+    hlod::PipelineGraph step;
+    step.insertNode(ran);
+    hlod::NodeOutput out;
+    out.scene = result.scene;
+    for (const auto& source : ran.sources)
+        out.inputs.push_back(source.string());
+    if (out.inputs.empty()) out.inputs = {"sample:plant"};
+    loadedImport_ = step.definition(import);
+    g.adopt(import, loadedImport_, hlod::NodeStatus::UpToDate,
+            std::make_shared<const hlod::NodeOutput>(std::move(out)));
 }
 
 void MainWindow::openDialog() {
@@ -363,19 +424,24 @@ void MainWindow::onLoaded(const LoadedScene& result) {
     setBusy(false);
     sceneFiles_ = result.files;
     firstBuildOfScene_ = true;
+    const hlod::NodeId keep = model_->shownBake();
+    // Nothing may bring a run of the old content into the document about to be replaced.
+    if (compare_) compare_->detach();
     model_->setScene(result.scene);
     if (pendingProject_) {
         adoptPendingProject(result.files);
-    } else {
+    } else if (!reloading_) {
         std::vector<std::filesystem::path> sources;
         for (const QString& file : result.files)
             sources.emplace_back(file.toStdString());
-        session_->newDocument(std::move(sources));
+        session_->newDocument(std::move(sources), keep);
         if (!result.files.isEmpty() && writeSettings_) {
             recent_.add(result.files);
             rebuildRecentMenu();
         }
     }
+    reloading_ = false;
+    adoptLoadedScene(result);
     const std::shared_ptr<const hlod::Scene>& loadedScene = model_->scene();
     treeModel_->setScene(loadedScene);
     tree_->expandToDepth(0);
@@ -409,6 +475,7 @@ void MainWindow::onLoaded(const LoadedScene& result) {
 
 void MainWindow::onLoadFailed(const QStringList& files, const QString& message) {
     setBusy(false);
+    reloading_ = false;
     // A project whose scene cannot be read is not opened: the open document stays.
     const QString title =
         pendingProject_

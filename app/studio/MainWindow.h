@@ -3,12 +3,20 @@
 // counts, load and build progress (with Cancel) in the status bar; File / Edit / Build / View /
 // Help.
 // Editing (issue #7): the window owns a ProjectSession (the hlod::Document, its undo history,
-// the project file). The Parameters dock edits the document's parameters through commands,
-// builds take their settings from the document (and rerun after every change once there is a
-// build), the Pipeline dock shows the document's node graph with the builds' statuses, the Edit
-// menu and the History dock follow its undo stack, the Clusters tab and the viewport hand-edit
-// clusters (MainWindowEdit.cpp), File saves and opens `.hlodproj` projects
-// (dirty mark in the title, save prompt on close, autosave and recovery) and exports packages.
+// the project file). The Parameters dock edits the selected node's parameters through commands,
+// builds are runs of the document's graph (issue 29: the runner `hlod build` uses; the shown
+// branch reruns after every change once there is a build), the Pipeline dock shows the
+// document's node graph with the statuses of the runs, the Edit menu and the History dock follow
+// its undo stack, the Clusters tab and the viewport hand-edit the shown branch's clusters
+// (MainWindowEdit.cpp), File saves and opens `.hlodproj` projects (dirty mark in the title, save
+// prompt on close, autosave and recovery) and exports packages (the shown branch's Export node,
+// or every Export node).
+// Branches: the view, the Clusters tab, Statistics and File ▸ Export Package follow the shown
+// Bake node (a click on it in the Pipeline dock, or the toolbar's branch box); Build ▸ Build
+// HLOD runs the shown branch, Build All Branches every Bake node of the scene.
+// The scene: the loader (SceneLoader) runs the Import step of the document's Import node and
+// its output is taken into the graph (PipelineGraph::adopt), so runs do not read the scene again;
+// an edit of the Import node (files, import parameters) reloads the scene the same way.
 // Opening a scene (not a project) starts a new untitled project over it, keeping parameters.
 // Opening a project (issue 20: the command line, File ▸ Open, Open Project, Open Recent, drag
 // and drop, with the offer to recover a newer autosave) reads it first, then loads its scene
@@ -38,6 +46,7 @@
 
 #include "RecentScenes.h"
 #include "pipeline/doc/Document.h"
+#include "pipeline/io/Import.h"
 #include "pipeline/scene/Scene.h"
 
 class QAction;
@@ -60,6 +69,7 @@ class DisplayToolBar;
 class StatsPanel;
 class StudioModel;
 class LogView;
+class PipelineEditor;
 class SceneLoader;
 class SceneTreeModel;
 class Viewport;
@@ -91,6 +101,7 @@ public:
     // Used with and without --screenshot.
     struct StartupView {
         bool build = false;
+        bool buildAll = false;       // every branch, not only the shown one
         std::optional<QString> mode; // "original", "clusters", "hlod"
         std::optional<int> level;
         bool tintByDepth = false;
@@ -141,6 +152,7 @@ private:
     void createBuildStatus();
     void onBuildStarted();
     void onBuildProgress(const QString& stage, qint64 done, qint64 total, const QString& detail);
+    void onShownBuildChanged();
     void onBuildFinished();
     void onBuildFailed(const QString& message);
     void onBuildCancelled();
@@ -158,7 +170,13 @@ private:
     void openProjectDialog();
     bool maybeSave();
     void exportDialog();
+    void exportAll();
     void onDocumentReplaced();
+    // A document edit: reloads the scene when the Import node changed (MainWindow.cpp).
+    void onDocumentEdited();
+    void reloadScene();
+    // The loaded scene as the output of the document's Import node (see The scene above).
+    void adoptLoadedScene(const hlod::widgets::LoadedScene& result);
     // The display (mode, level, tint) kept in the document's view state when saving, and the
     // startup view that shows it again after opening.
     void storeViewState();
@@ -203,6 +221,12 @@ private:
     hlod::widgets::ProjectSession* session_ = nullptr;
     hlod::widgets::ClusterEditActions* clusterEdits_ = nullptr;
     QAction* exportAction_ = nullptr;
+    QAction* exportAllAction_ = nullptr;
+    QAction* buildAllAction_ = nullptr;
+    hlod::widgets::PipelineEditor* pipeline_ = nullptr;
+    hlod::ImportOptions loadOptions_; // what the running or last load was given
+    std::string loadedImport_;        // definition of the Import node the scene was loaded for
+    bool reloading_ = false;          // the running load reads the document's Import again
     struct PendingProject {
         hlod::Document doc;
         QString path;

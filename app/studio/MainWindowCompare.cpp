@@ -1,13 +1,14 @@
 // The comparison parts of the main window (see MainWindow.h): View ▸ Compare Configurations
-// opens a widgets::CompareView window over the open scene (left = the document's settings,
-// right = AABB k=2, or sphere when the document uses AABB), starting from the editor's camera.
-// The window follows the editor: a new scene is compared instead (with the same two
-// configurations), a document change rebuilds the sides whose settings it changes, and "Use
-// These Settings" edits the document through its undo stack. Closing the window cancels its
-// builds; reopening it on the same scene keeps its results.
-// Command line: --compare LEFT:RIGHT opens it once the scene has loaded; with --screenshot it
-// saves the comparison window (not the main window) when both sides are built, exit code 1
-// when a side fails.
+// opens a widgets::CompareView window over the open scene (left = the shown branch; right =
+// another branch of the document when there is one, else AABB k=2 over the shown branch, or
+// sphere when it uses AABB, as a temporary branch), starting from the editor's camera.
+// The window follows the editor: a new scene is compared instead (with the same two sides where
+// the new document has them), a document change rebuilds the sides it changes, and "Use These
+// Settings" edits the document through its undo stack. Closing the window cancels its builds;
+// reopening it on the same scene keeps its results.
+// Command line: --compare LEFT:RIGHT opens it once the scene has loaded (#N names Bake node N);
+// with --screenshot it saves the comparison window (not the main window) when both sides are
+// built, exit code 1 when a side fails.
 #include "MainWindow.h"
 
 #include <QAction>
@@ -31,17 +32,16 @@ void MainWindow::addCompareActions(QMenu* view) {
     compareAction_ =
         view->addAction(tr("&Compare Configurations…"), this, &MainWindow::showCompare);
     compareAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C));
-    compareAction_->setStatusTip(tr("Build two configurations of this scene (e.g. sphere and "
-                                    "AABB k=2) and compare them side by side with linked "
-                                    "cameras and statistics"));
+    compareAction_->setStatusTip(tr("Compare two branches of this scene (two Bake nodes, or one "
+                                    "and a quick configuration such as AABB k=2) side by side "
+                                    "with linked cameras and statistics"));
     compareAction_->setEnabled(false);
     // Deferred: the scene arrives before the document of a new scene is made (onLoaded).
     connect(model_, &hlod::widgets::StudioModel::sceneChanged, this,
             [this] { QTimer::singleShot(0, this, &MainWindow::onCompareSceneChanged); });
     connect(session_, &hlod::widgets::ProjectSession::documentChanged, this, [this] {
         // A hidden comparison catches up when shown again (showCompare).
-        if (compare_ && compare_->isVisible() && compare_->scene())
-            compare_->setBaseSettings(session_->settings());
+        if (compare_ && compare_->isVisible() && compare_->scene()) compare_->documentChanged();
     });
 }
 
@@ -67,11 +67,13 @@ void MainWindow::showCompare() {
     if (!viewport_ || !scene()) return;
     if (!compare_) createCompareView();
     const bool fresh = compare_->scene() != scene();
+    hlod::PipelineGraph* graph = &session_->document().graph();
     if (fresh)
-        compare_->open(scene(), session_->settings(),
-                       hlod::widgets::defaultConfigs(session_->settings()));
+        compare_->open(
+            scene(), graph, model_->shownBake(),
+            hlod::widgets::defaultSides(*graph, model_->shownBake(), model_->bakeNodes()));
     else
-        compare_->setBaseSettings(session_->settings()); // rebuilds the sides it changes
+        compare_->documentChanged(); // rebuilds the sides it changes
     if (!fresh && !compare_->allBuilt() && !compare_->building())
         compare_->rebuildAll(); // closed mid-build earlier
     compare_->setWindowTitle(
@@ -89,14 +91,23 @@ void MainWindow::onCompareSceneChanged() {
         return;
     }
     if (!compare_ || compare_->scene() == scene()) return;
+    hlod::PipelineGraph* graph = &session_->document().graph();
+    // The same two sides where the new document has them (a Bake node that is gone becomes its
+    // configuration over the shown branch).
+    auto keep = [graph](hlod::widgets::CompareSide side) {
+        if (side.bake != hlod::kNoNode &&
+            (!graph->hasNode(side.bake) || graph->node(side.bake).kind != hlod::NodeKind::Bake))
+            side.bake = hlod::kNoNode;
+        return side;
+    };
+    const std::pair<hlod::widgets::CompareSide, hlod::widgets::CompareSide> sides{
+        keep(compare_->left()->side()), keep(compare_->right()->side())};
     if (compare_->isVisible() && scene()) {
-        // Compare the new scene with the same two configurations, from the editor's view.
-        compare_->open(scene(), session_->settings(),
-                       {compare_->left()->config(), compare_->right()->config()});
+        // Compare the new scene with the same two sides, from the editor's view.
+        compare_->open(scene(), graph, model_->shownBake(), sides);
         compare_->copyCamera(viewport_->camera());
     } else {
-        compare_->open(nullptr, session_->settings(),
-                       {compare_->left()->config(), compare_->right()->config()});
+        compare_->open(nullptr, graph, model_->shownBake(), sides);
     }
 }
 
@@ -106,9 +117,19 @@ void MainWindow::openStartupCompare() {
         if (!screenshotPath_.isEmpty()) exitScreenshotMode(2, glProblem_);
         return;
     }
-    std::pair<hlod::widgets::CompareConfig, hlod::widgets::CompareConfig> configs;
+    hlod::PipelineGraph* graph = &session_->document().graph();
+    std::pair<hlod::widgets::CompareSide, hlod::widgets::CompareSide> sides;
     QString error;
-    if (!hlod::widgets::parseConfigPair(compareSpec_, session_->settings(), configs, &error)) {
+    bool ok = hlod::widgets::parseSidePair(
+        compareSpec_, hlod::widgets::configOf(*graph, model_->shownBake()), sides, &error);
+    for (hlod::widgets::CompareSide* side : {&sides.first, &sides.second}) {
+        if (!ok || side->bake == hlod::kNoNode) continue;
+        if (!graph->hasNode(side->bake) || graph->node(side->bake).kind != hlod::NodeKind::Bake) {
+            error = tr("--compare: the document has no Bake node #%1").arg(side->bake);
+            ok = false;
+        }
+    }
+    if (!ok) {
         log_->error(error);
         if (!screenshotPath_.isEmpty()) exitScreenshotMode(2, error);
         return;
@@ -125,14 +146,13 @@ void MainWindow::openStartupCompare() {
                     exitScreenshotMode(1, pane->statusLabel()->text());
             });
     }
-    compare_->open(scene(), session_->settings(), configs);
+    compare_->open(scene(), graph, model_->shownBake(), sides);
     compare_->setWindowTitle(
         tr("Compare Configurations — %1").arg(windowTitle().remove(QStringLiteral("[*]"))));
     compare_->show();
     compare_->copyCamera(viewport_->camera());
     log_->info(tr("Comparing %1 with %2")
-                   .arg(hlod::widgets::configLabel(configs.first, true),
-                        hlod::widgets::configLabel(configs.second, true)));
+                   .arg(compare_->left()->label(true), compare_->right()->label(true)));
 }
 
 void MainWindow::takeCompareScreenshot(int attemptsLeft) {

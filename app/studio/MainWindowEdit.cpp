@@ -1,11 +1,14 @@
 // The editing parts of the main window (see MainWindow.h): the ProjectSession that owns the
 // document, the Edit menu (Undo / Redo from the document's history), the History dock
-// (QUndoView), the Parameters dock (ParameterPanels of the Cluster and Bake nodes and of the
-// node selected in the graph: every edit a document command), the Pipeline dock (the node graph
-// of the document: add, remove, connect, status colours of the builds), the automatic rebuild
-// after parameter and hand edits (AutoRebuild), and the cluster hand edits of the Clusters tab
-// and the viewport (Ctrl+click adds to the selection, right click opens the edit menu).
+// (QUndoView), the Parameters dock (the ParameterPanel of the node selected in the graph: every
+// edit a document command), the Pipeline dock (the node graph of the document: add, remove,
+// connect, duplicate branches, rename; the statuses of the runs; a click on a Bake node shows its
+// branch), the automatic rerun of the shown branch after edits (AutoRebuild), and the cluster
+// hand edits of the Clusters tab and the viewport (Ctrl+click adds to the selection, right click
+// opens the edit menu), which act on the shown branch's Cluster node.
 #include "MainWindow.h"
+
+#include <algorithm>
 
 #include <QAction>
 #include <QDockWidget>
@@ -21,6 +24,7 @@
 #include "widgets/StudioModel.h"
 #include "widgets/doc/AutoRebuild.h"
 #include "widgets/doc/ProjectSession.h"
+#include "widgets/graph/NodeGraphView.h"
 #include "widgets/graph/PipelineEditor.h"
 #include "widgets/params/BuildParameters.h"
 
@@ -28,9 +32,8 @@ using hlod::widgets::ProjectSession;
 
 void MainWindow::createSession() {
     session_ = new ProjectSession(this);
-    model_->setDocument(&session_->document());
-    connect(session_, &ProjectSession::documentChanged, model_,
-            &hlod::widgets::StudioModel::syncSettings);
+    model_->setGraph(&session_->document().graph());
+    connect(session_, &ProjectSession::documentChanged, this, &MainWindow::onDocumentEdited);
     connect(session_, &ProjectSession::dirtyChanged, this, [this] { updateTitle(); });
     connect(session_, &ProjectSession::projectChanged, this, &MainWindow::onDocumentReplaced);
     // Parameter and hand edits (and their undo) rebuild the HLOD once there is one.
@@ -64,7 +67,9 @@ void MainWindow::createEditDocks() {
     if (auto* logDock = findChild<QDockWidget*>(QStringLiteral("LogDock")))
         tabifyDockWidget(pipelineDock, logDock);
     pipelineDock->raise();
-    resizeDocks({pipelineDock}, {190}, Qt::Vertical);
+    // Two branches (Import and two rows of Cluster -> Bake -> Export) without scrolling.
+    resizeDocks({pipelineDock}, {290}, Qt::Vertical);
+    pipeline_ = pipeline;
     connect(pipeline, &hlod::widgets::PipelineEditor::nodeSelected, this,
             [this, paramsDock](quint32 node) {
                 buildParams_->showNode(node);
@@ -103,8 +108,23 @@ void MainWindow::createEditMenu() {
 }
 
 void MainWindow::onDocumentReplaced() {
-    const hlod::Document& doc = session_->document();
-    if (buildParams_) buildParams_->setNodes(doc.clusterNode(), doc.bakeNode());
-    model_->syncSettings();
+    // The branch the project was saved showing, else the one shown (a save under a new name
+    // replaces nothing), else the first one.
+    const std::vector<hlod::NodeId> bakes = model_->bakeNodes();
+    const bool known = std::find(bakes.begin(), bakes.end(), model_->shownBake()) != bakes.end();
+    hlod::NodeId shown = known           ? model_->shownBake()
+                         : bakes.empty() ? hlod::kNoNode
+                                         : bakes.front();
+    const nlohmann::json& state = session_->document().viewState();
+    if (const auto display = state.find("display");
+        display != state.end() && display->is_object() && display->contains("bake")) {
+        const nlohmann::json& bake = (*display)["bake"];
+        if (bake.is_number_unsigned() &&
+            std::find(bakes.begin(), bakes.end(), bake.get<hlod::NodeId>()) != bakes.end())
+            shown = bake.get<hlod::NodeId>();
+    }
+    model_->setShownBake(shown);
+    if (pipeline_) pipeline_->view()->selectNode(shown);
+    if (buildParams_) buildParams_->showNode(shown);
     updateTitle();
 }

@@ -1,7 +1,8 @@
 // The HLOD parts of the main window (see MainWindow.h): cluster tree tab, Statistics dock, the
-// display toolbar, the Build menu, build progress with Cancel in the status bar, the two-way
-// selection sync between the trees and the viewport (widgets::SelectionSync), and the command
-// line's startup view (--build, --mode, --level).
+// display toolbar with the branch box, the Build menu (the shown branch, all branches), run
+// progress with Cancel in the status bar, the two-way selection sync between the trees and the
+// viewport (widgets::SelectionSync), and the command line's startup view (--build, --mode,
+// --level).
 #include "MainWindow.h"
 
 #include <QAction>
@@ -19,6 +20,7 @@
 #include <QTimer>
 #include <QTreeView>
 
+#include "widgets/BranchBox.h"
 #include "widgets/ClusterTreeExpansion.h"
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
@@ -29,6 +31,7 @@
 #include "widgets/StatsPanel.h"
 #include "widgets/StudioModel.h"
 #include "widgets/Viewport.h"
+#include "widgets/doc/ProjectSession.h"
 
 using hlod::widgets::StudioModel;
 
@@ -56,10 +59,14 @@ void MainWindow::createHlodDocks() {
 
     toolBar_ = new hlod::widgets::DisplayToolBar(model_, this);
     addToolBar(Qt::TopToolBarArea, toolBar_);
+    toolBar_->addSeparator();
+    toolBar_->addWidget(new QLabel(tr("Branch ")));
+    toolBar_->addWidget(new hlod::widgets::BranchBox(model_, session_, toolBar_));
 
     connect(model_, &StudioModel::buildStarted, this, &MainWindow::onBuildStarted);
     connect(model_, &StudioModel::buildProgress, this, &MainWindow::onBuildProgress);
-    connect(model_, &StudioModel::buildFinished, this, &MainWindow::onBuildFinished);
+    connect(model_, &StudioModel::buildFinished, this, &MainWindow::onShownBuildChanged);
+    connect(model_, &StudioModel::runFinished, this, &MainWindow::onBuildFinished);
     connect(model_, &StudioModel::buildFailed, this, &MainWindow::onBuildFailed);
     connect(model_, &StudioModel::buildCancelled, this, &MainWindow::onBuildCancelled);
     connect(model_, &StudioModel::sceneChanged, this, [this] {
@@ -76,16 +83,26 @@ void MainWindow::createBuildMenu() {
     QMenu* build = menuBar()->addMenu(tr("&Build"));
     buildAction_ = build->addAction(tr("&Build HLOD"), model_, &StudioModel::build);
     buildAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-    buildAction_->setStatusTip(tr("Cluster the scene and bake the proxies with the parameters "
-                                  "of the Parameters dock, in the background"));
+    buildAction_->setStatusTip(tr("Run the shown branch (its Cluster and Bake nodes) in the "
+                                  "background: only what changed runs"));
+    buildAction_->setObjectName(QStringLiteral("actionBuild"));
+    buildAllAction_ = build->addAction(tr("Build &All Branches"), model_, &StudioModel::buildAll);
+    buildAllAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
+    buildAllAction_->setStatusTip(tr("Run every Bake node of the scene in the background"));
+    buildAllAction_->setObjectName(QStringLiteral("actionBuildAll"));
     cancelAction_ = build->addAction(tr("&Cancel Build"), model_, &StudioModel::cancelBuild);
     cancelAction_->setEnabled(false);
-    buildAction_->setObjectName(QStringLiteral("actionBuild"));
-    // Build HLOD applies to an open scene with no build running.
-    auto updateBuild = [this] { buildAction_->setEnabled(model_->scene() && !model_->building()); };
-    for (auto signal : {&StudioModel::sceneChanged, &StudioModel::buildStarted,
-                        &StudioModel::buildFinished, &StudioModel::buildCancelled})
+    // Builds apply to an open scene with a branch to run and no run going on.
+    auto updateBuild = [this] {
+        const bool idle = model_->scene() && !model_->building();
+        buildAction_->setEnabled(idle && model_->shownBake() != hlod::kNoNode);
+        buildAllAction_->setEnabled(idle && !model_->bakeNodes().empty());
+    };
+    for (auto signal :
+         {&StudioModel::sceneChanged, &StudioModel::buildStarted, &StudioModel::runFinished,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, updateBuild);
+    connect(session_, &hlod::widgets::ProjectSession::documentChanged, this, updateBuild);
     connect(model_, &StudioModel::buildFailed, this, updateBuild);
     updateBuild();
     build->addSeparator();
@@ -107,19 +124,6 @@ void MainWindow::createBuildStatus() {
     hideBuildProgress();
 }
 
-namespace {
-
-QString settingsSummary(const hlod::HlodSettings& s) {
-    QString volume = QString::fromLatin1(hlod::toString(s.cluster.volume));
-    if (s.cluster.volume == hlod::VolumeType::Aabb)
-        volume += QStringLiteral(" k=%1").arg(s.cluster.k);
-    return QCoreApplication::translate("MainWindow", "%1, %2 proxies, S = %3 px")
-        .arg(volume, QString::fromLatin1(hlod::toString(s.bake.method)))
-        .arg(s.bake.screen.screenSize);
-}
-
-} // namespace
-
 void MainWindow::onBuildStarted() {
     buildLabel_->setText(tr("Building HLOD…"));
     buildBar_->setRange(0, 0);
@@ -127,7 +131,15 @@ void MainWindow::onBuildStarted() {
                        static_cast<QWidget*>(cancelButton_)})
         w->show();
     cancelAction_->setEnabled(true);
-    log_->info(tr("Building the HLOD (%1)").arg(settingsSummary(model_->settings())));
+    QStringList targets;
+    for (hlod::NodeId id : model_->runTargets()) {
+        const hlod::PipelineGraph& g = session_->document().graph();
+        const hlod::NodeKind kind = g.node(id).kind;
+        targets << (kind == hlod::NodeKind::Bake
+                        ? model_->branchLabel(id)
+                        : QString::fromStdString(describeNode(g.node(id))));
+    }
+    log_->info(tr("Running %1").arg(targets.join(QStringLiteral(", "))));
 }
 
 void MainWindow::onBuildProgress(const QString& stage, qint64 done, qint64 total,
@@ -145,26 +157,38 @@ void MainWindow::onBuildProgress(const QString& stage, qint64 done, qint64 total
     }
 }
 
-void MainWindow::onBuildFinished() {
-    hideBuildProgress();
+void MainWindow::onShownBuildChanged() {
+    if (!model_->hasBuild()) {
+        clusterModel_->setBuild(nullptr, nullptr);
+        return;
+    }
     const hlod::widgets::BuiltHlod& built = model_->built();
     clusterModel_->setBuild(built.scene, built.build, model_->clusterLabels());
     if (firstBuildOfScene_) {
-        // Later builds (edits, parameters) keep the level the user chose.
+        // Later builds (edits, parameters, other branches) keep the level the user chose.
         clusterTree_->expandToDepth(0);
         model_->setLevel(model_->suggestedLevel());
         firstBuildOfScene_ = false;
     }
-    const QLocale locale;
-    log_->info(tr("Built the HLOD: %1 nodes, height %2, %3 proxy triangles (cluster %4 s, "
-                  "bake %5 s: %6 baked, %7 reused)")
-                   .arg(built.build->tree.nodes.size())
-                   .arg(built.build->tree.height())
-                   .arg(locale.toString(static_cast<qulonglong>(built.build->bake.proxyTriangles)))
-                   .arg(locale.toString(built.build->clusterSeconds, 'f', 2))
-                   .arg(locale.toString(built.build->bakeSeconds, 'f', 2))
-                   .arg(built.build->bake.baked)
-                   .arg(built.build->bake.reused));
+}
+
+void MainWindow::onBuildFinished() {
+    hideBuildProgress();
+    if (model_->hasBuild()) {
+        const hlod::widgets::BuiltHlod& built = model_->built();
+        const QLocale locale;
+        log_->info(
+            tr("%1: %2 nodes, height %3, %4 proxy triangles (cluster %5 s, bake %6 s: %7 "
+               "baked, %8 reused)")
+                .arg(model_->branchLabel(built.bakeNode))
+                .arg(built.build->tree->nodes.size())
+                .arg(built.build->tree->height())
+                .arg(locale.toString(static_cast<qulonglong>(built.build->bake->proxyTriangles)))
+                .arg(locale.toString(built.build->clusterSeconds, 'f', 2))
+                .arg(locale.toString(built.build->bake->seconds, 'f', 2))
+                .arg(built.build->bake->baked)
+                .arg(built.build->bake->reused));
+    }
     if (startupPending_) applyStartupView();
 }
 
@@ -193,11 +217,16 @@ void MainWindow::onBuildCancelled() {
 
 void MainWindow::setStartupView(const StartupView& view) {
     startup_ = view;
-    startupPending_ = view.build || view.mode || view.level || view.tintByDepth;
+    startupPending_ = view.build || view.buildAll || view.mode || view.level || view.tintByDepth;
 }
 
 void MainWindow::applyStartupView() {
-    if (startup_.build && !model_->hasBuild()) {
+    if (startup_.buildAll && !model_->bakeNodes().empty()) {
+        startup_.buildAll = false; // once: onBuildFinished comes back here
+        model_->buildAll();
+        return;
+    }
+    if (startup_.build && !model_->hasBuild() && model_->shownBake() != hlod::kNoNode) {
         model_->build();
         return; // onBuildFinished comes back here
     }

@@ -1,8 +1,10 @@
 // Project files and export in the main window (see MainWindow.h): File ▸ Open Project, Save
-// Project (Ctrl+S), Save Project As, Export Package; the "save changes?" prompt on close and
+// Project (Ctrl+S), Save Project As, Export Package (the shown branch's Export node, added when
+// the branch has none), Export All (every Export node); the "save changes?" prompt on close and
 // before another scene or project replaces the document; the offer to recover a newer
 // autosave when a project opens; opening a project in two steps (read it, load its scene, then
-// adopt it, build and show it); the display kept in the project's view state.
+// adopt it, build and show it); the display (and the shown branch) kept in the project's view
+// state.
 #include "MainWindow.h"
 
 #include <QAction>
@@ -21,6 +23,7 @@
 #include "widgets/SceneLoader.h"
 #include "widgets/StudioModel.h"
 #include "widgets/doc/ProjectSession.h"
+#include "widgets/graph/PipelineEditor.h"
 
 using hlod::widgets::ProjectSession;
 
@@ -45,17 +48,29 @@ void MainWindow::addProjectActions(QMenu* file) {
     exportAction_ = file->addAction(tr("&Export Package…"), this, &MainWindow::exportDialog);
     exportAction_->setObjectName(QStringLiteral("actionExport"));
     exportAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-    exportAction_->setStatusTip(tr("Write the current HLOD as a 3D Tiles package"));
+    exportAction_->setStatusTip(tr("Write the shown branch's package (its Export node) as 3D "
+                                   "Tiles"));
     exportAction_->setEnabled(false);
-    // Export applies to a finished build while no other build runs (it would replace it).
+    exportAllAction_ = file->addAction(tr("Export &All Packages"), this, &MainWindow::exportAll);
+    exportAllAction_->setObjectName(QStringLiteral("actionExportAll"));
+    exportAllAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    exportAllAction_->setStatusTip(tr("Run every Export node: each branch's package into its own "
+                                      "folder"));
+    exportAllAction_->setEnabled(false);
+    // Export applies to an open scene while no run goes on (it would replace it).
     auto updateExport = [this] {
-        exportAction_->setEnabled(model_->hasBuild() && !model_->building());
+        const bool idle = model_->scene() && !model_->building();
+        exportAction_->setEnabled(idle && model_->shownBake() != hlod::kNoNode);
+        exportAllAction_->setEnabled(
+            idle && !session_->document().graph().nodesOf(hlod::NodeKind::Export).empty());
     };
     using hlod::widgets::StudioModel;
-    for (auto signal : {&StudioModel::buildFinished, &StudioModel::sceneChanged,
-                        &StudioModel::buildStarted, &StudioModel::buildCancelled})
+    for (auto signal :
+         {&StudioModel::runFinished, &StudioModel::sceneChanged, &StudioModel::buildStarted,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, updateExport);
     connect(model_, &StudioModel::buildFailed, this, updateExport);
+    connect(session_, &ProjectSession::documentChanged, this, updateExport);
 }
 
 void MainWindow::openProjectDialog() {
@@ -101,6 +116,8 @@ bool MainWindow::openProject(const QString& path) {
     log_->info(recover ? tr("Recovering %1 from its autosave").arg(file)
                        : tr("Opening project %1").arg(file));
     pendingProject_ = std::move(pending);
+    reloading_ = false;
+    loadOptions_ = options;
     loader_->load(files, options);
     return true;
 }
@@ -150,6 +167,7 @@ void MainWindow::storeViewState() {
                                                                          : "original";
     nlohmann::json state = session_->document().viewState();
     state["display"] = {{"mode", mode}, {"level", view.level}, {"tint_depth", view.tintByDepth}};
+    if (model_->shownBake() != hlod::kNoNode) state["display"]["bake"] = model_->shownBake();
     session_->document().setViewState(std::move(state));
 }
 
@@ -205,34 +223,56 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::exportDialog() {
-    if (!model_->hasBuild()) return;
-    hlod::widgets::ExportRequest request;
-    request.built = model_->built();
-    const hlod::Document& doc = session_->document();
-    request.edits = doc.graph().node(doc.clusterNode()).edits;
-    for (const std::filesystem::path& source : doc.sources())
-        request.inputs.push_back(source.string());
-    if (request.inputs.empty()) request.inputs.push_back("sample:plant");
+    const hlod::NodeId bake = model_->shownBake();
+    hlod::PipelineGraph& g = session_->document().graph();
+    if (bake == hlod::kNoNode || !g.hasNode(bake) || model_->building()) return;
+    // The shown branch's Export node; a branch without one gets one (an undoable step).
+    hlod::NodeId exportNode = hlod::kNoNode;
+    for (hlod::NodeId id : g.nodesOf(hlod::NodeKind::Export))
+        if (g.upstreamOf(id) == bake && exportNode == hlod::kNoNode) exportNode = id;
+    if (exportNode == hlod::kNoNode) {
+        const hlod::NodeId next = g.nextId();
+        if (!pipeline_->addAfter(hlod::NodeKind::Export, bake)) return;
+        exportNode = next;
+    }
     QString folder =
         session_->projectPath().isEmpty()
             ? QDir::home().filePath(QStringLiteral("hlod-package"))
             : QFileInfo(session_->projectPath()).absolutePath() + QStringLiteral("/package");
-    hlod::widgets::ExportDialog dialog(std::move(request), folder, this);
+    if (g.nodesOf(hlod::NodeKind::Export).size() > 1)
+        folder += QStringLiteral("-%1").arg(exportNode); // every branch its own folder
+    hlod::widgets::ExportDialog dialog(*session_->undo(), model_, exportNode, folder, this);
     dialog.setObjectName(QStringLiteral("ExportDialog"));
-    // The model knows what was exported: the Pipeline dock's Export node shows it.
-    connect(&dialog, &hlod::widgets::ExportDialog::exportStarted, model_,
-            &hlod::widgets::StudioModel::exportStarted);
-    connect(dialog.exporter(), &hlod::widgets::PackageExporter::finished, this,
+    connect(&dialog, &hlod::widgets::ExportDialog::exported, this,
             [this](const QString& dir, qint64 files, qint64) {
-                model_->exportFinished(dir);
                 log_->info(tr("Exported the package to %1 (%2 files)").arg(dir).arg(files));
             });
-    connect(dialog.exporter(), &hlod::widgets::PackageExporter::failed, this,
-            [this](const QString& message) {
-                model_->exportFailed(message);
-                log_->error(message);
-            });
-    connect(dialog.exporter(), &hlod::widgets::PackageExporter::cancelled, model_,
-            &hlod::widgets::StudioModel::exportCancelled);
     dialog.exec();
+}
+
+void MainWindow::exportAll() {
+    const hlod::PipelineGraph& g = session_->document().graph();
+    const std::vector<hlod::NodeId> exports = g.nodesOf(hlod::NodeKind::Export);
+    if (exports.empty() || model_->building()) return;
+    // The outcome, once: each package written, or the one line of the node that failed.
+    auto* context = new QObject(this);
+    auto done = [this, context, exports] {
+        const hlod::PipelineGraph& graph = session_->document().graph();
+        for (hlod::NodeId id : exports) {
+            const hlod::NodeOutput* out = graph.hasNode(id) ? graph.output(id) : nullptr;
+            if (out && out->exported && graph.status(id) == hlod::NodeStatus::UpToDate)
+                log_->info(tr("%1: wrote the package to %2 (%3 files)")
+                               .arg(QString::fromStdString(describeNode(graph.node(id))),
+                                    QString::fromStdString(out->exported->output.string()))
+                               .arg(out->exported->written.files));
+        }
+        statusBar()->showMessage(tr("Exported %1 packages").arg(exports.size()), 8000);
+        context->deleteLater();
+    };
+    using hlod::widgets::StudioModel;
+    connect(model_, &StudioModel::runFinished, context, done);
+    connect(model_, &StudioModel::buildFailed, context, [context] { context->deleteLater(); });
+    connect(model_, &StudioModel::buildCancelled, context, [context] { context->deleteLater(); });
+    model_->runExports(exports);
+    if (!model_->building()) context->deleteLater();
 }

@@ -3,12 +3,12 @@
 //
 //   hlod-studio [FILES...|PROJECT.hlodproj] [--screenshot OUT.png [--viewport-only]] [--size WxH]
 //   [--orbit AZ,EL]
-//               [--build] [--mode original|clusters|hlod] [--level N] [--tint-depth]
-//               [--compare LEFT:RIGHT]
+//               [--build] [--build-all] [--mode original|clusters|hlod] [--level N]
+//               [--tint-depth] [--compare LEFT:RIGHT]
 //
 // With no file the embedded sample scene opens; a .hlodproj opens as a project (issue 20). --build
-// runs the HLOD pipeline once the scene is loaded; --mode picks the display mode (clusters and hlod
-// need a build and imply --build);
+// runs the shown branch of the pipeline once the scene is loaded, --build-all every branch (each
+// Bake node); --mode picks the display mode (clusters and hlod need a build and imply --build);
 // --level the cluster level shown in Clusters mode; --tint-depth tints the HLOD preview's
 // drawn nodes by their depth in the tree. --compare opens View ▸ Compare Configurations with
 // two configurations (e.g. sphere:aabb-k2, see widgets/compare/CompareConfig.h); with
@@ -66,9 +66,11 @@ bool usage(const QString& message) {
 
 // --build, --mode, --level into `startup`; false (after printing why) on bad values.
 bool parseStartup(const QCommandLineParser& parser, const QCommandLineOption& build,
-                  const QCommandLineOption& mode, const QCommandLineOption& level,
-                  const QCommandLineOption& tint, MainWindow::StartupView& startup) {
-    startup.build = parser.isSet(build);
+                  const QCommandLineOption& buildAll, const QCommandLineOption& mode,
+                  const QCommandLineOption& level, const QCommandLineOption& tint,
+                  MainWindow::StartupView& startup) {
+    startup.build = parser.isSet(build) || parser.isSet(buildAll);
+    startup.buildAll = parser.isSet(buildAll);
     startup.tintByDepth = parser.isSet(tint);
     if (parser.isSet(mode)) {
         hlod::widgets::DisplayMode m;
@@ -158,6 +160,10 @@ bool parseOptions(QCoreApplication& app, Options& options) {
     const QCommandLineOption build(
         QStringLiteral("build"),
         QCoreApplication::translate("main", "Build the HLOD once the scene is loaded."));
+    const QCommandLineOption buildAll(
+        QStringLiteral("build-all"),
+        QCoreApplication::translate("main", "Build every branch (each Bake node of the pipeline) "
+                                            "once the scene is loaded."));
     const QCommandLineOption mode(
         QStringLiteral("mode"),
         QCoreApplication::translate("main", "Display mode: original, clusters or hlod (the "
@@ -172,18 +178,19 @@ bool parseOptions(QCoreApplication& app, Options& options) {
         QCoreApplication::translate("main", "HLOD preview: tint drawn nodes by tree depth."));
     const QCommandLineOption compare(
         QStringLiteral("compare"),
-        QCoreApplication::translate("main", "Compare two configurations side by side, e.g. "
+        QCoreApplication::translate("main", "Compare two branches side by side, e.g. "
                                             "sphere:aabb-k2 (also octree, original, current, "
-                                            "@S for the screen size)."),
+                                            "@S for the screen size; #N: Bake node N)."),
         QStringLiteral("LEFT:RIGHT"));
-    parser.addOptions({screenshot, viewportOnly, size, orbit, build, mode, level, tint, compare});
+    parser.addOptions(
+        {screenshot, viewportOnly, size, orbit, build, buildAll, mode, level, tint, compare});
     parser.process(app);
-    if (!parseStartup(parser, build, mode, level, tint, options.startup)) return false;
+    if (!parseStartup(parser, build, buildAll, mode, level, tint, options.startup)) return false;
     if (parser.isSet(compare)) {
-        std::pair<hlod::widgets::CompareConfig, hlod::widgets::CompareConfig> configs;
+        std::pair<hlod::widgets::CompareSide, hlod::widgets::CompareSide> sides;
         QString error;
-        if (!hlod::widgets::parseConfigPair(parser.value(compare), hlod::HlodSettings{}, configs,
-                                            &error))
+        if (!hlod::widgets::parseSidePair(parser.value(compare), hlod::widgets::CompareConfig{},
+                                          sides, &error))
             return usage(QStringLiteral("--compare: ") + error);
         options.compare = parser.value(compare);
     }

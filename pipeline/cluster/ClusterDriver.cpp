@@ -33,7 +33,10 @@ double clusteringMinExtent(const std::vector<Aabb>& boxes) {
 
 void validateConstraints(const ClusterParams& params, std::size_t instanceCount) {
     if (params.maxChildren < 2) invalid("max children must be at least 2");
-    if (!(params.k >= 0.0) || params.k > 1e6) invalid("k must be within [0, 1e6]");
+    // The arithmetic's limits only (the cost's (max / min extent)^k overflows past 1e6); the
+    // range a user may choose is the parameter declaration's (pipeline/graph/Parameters.cpp).
+    if (!(params.k >= 0.0) || params.k > 1e6)
+        invalid("k must be a non-negative number the cost can raise to (at most 1e6)");
     // 0 = free, 1 = locked, 2 = excluded
     std::vector<unsigned char> state(instanceCount, 0);
     auto check = [&](Id id) {

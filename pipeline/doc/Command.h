@@ -1,7 +1,7 @@
-// One undoable change of a Document (DESIGN.md: "undo belongs to the document: every change,
-// parameter edits included, is a command"). Modelled on Qt's QUndoCommand (text, id/mergeWith)
-// but without Qt, so the CLI and tests use the same commands; widgets/doc/UndoAdapter wraps them
-// in QUndoCommands.
+// One undoable change of a Document (docs/architecture.md, "Undo": undo belongs to the document,
+// every change, parameter edits included, is a command). Modelled on Qt's QUndoCommand (text,
+// id/mergeWith) but without Qt, so the CLI and tests use the same commands; widgets/doc/UndoAdapter
+// wraps them in QUndoCommands.
 //
 // Contract: apply() makes the change and records what it needs to undo it (the first apply
 // computes the result from the document as it is then; a redo repeats exactly that result);

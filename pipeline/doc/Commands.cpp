@@ -28,7 +28,8 @@ SetParameter::SetParameter(NodeId node, std::string key, ParamValue value, std::
 
 std::string SetParameter::text() const {
     const ParamDecl* d = findParameter(key_);
-    return "Set " + (d ? d->label : key_);
+    if (!d) return "Set " + key_;
+    return "Set " + d->label + " of " + kindLabel(d->node) + " #" + std::to_string(node_);
 }
 
 void SetParameter::apply(Document& doc) {
@@ -77,19 +78,32 @@ nlohmann::json SetSources::toJson() const {
 
 // --- AddNode / RemoveNode -------------------------------------------------------------------
 
-AddNode::AddNode(NodeKind kind, double x, double y) {
+AddNode::AddNode(NodeKind kind, double x, double y, NodeId input) : input_(input) {
     node_.kind = kind;
     node_.params = defaultValues(kind);
     node_.x = x;
     node_.y = y;
 }
 
-std::string AddNode::text() const { return std::string("Add ") + toString(node_.kind) + " node"; }
+std::string AddNode::text() const {
+    if (node_.id == kNoNode) return std::string("Add ") + kindLabel(node_.kind) + " node";
+    return "Add " + nodeLabel(node_);
+}
 
 void AddNode::apply(Document& doc) {
-    const NodeId next = doc.graph().nextId();
+    PipelineGraph& g = doc.graph();
+    const NodeId next = g.nextId();
     if (node_.id == kNoNode) node_.id = next; // a redo reuses the first id
-    doc.graph().insertNode(node_);
+    g.insertNode(node_);
+    if (input_ != kNoNode) {
+        try {
+            g.connect({input_, 0, node_.id, 0});
+        } catch (...) {
+            g.removeNode(node_.id);
+            g.setNextId(next);
+            throw;
+        }
+    }
     nextBefore_ = next;
 }
 
@@ -99,10 +113,15 @@ void AddNode::revert(Document& doc) {
 }
 
 nlohmann::json AddNode::toJson() const {
-    return {{"command", "add_node"}, {"kind", toString(node_.kind)}, {"node", node_.id}};
+    nlohmann::json j = {
+        {"command", "add_node"}, {"kind", toString(node_.kind)}, {"node", node_.id}};
+    if (input_ != kNoNode) j["input"] = input_;
+    return j;
 }
 
-std::string RemoveNode::text() const { return "Remove node " + std::to_string(id_); }
+std::string RemoveNode::text() const {
+    return removed_ ? "Remove " + nodeLabel(*removed_) : "Remove node " + std::to_string(id_);
+}
 
 void RemoveNode::apply(Document& doc) {
     GraphNode n = doc.graph().node(id_);
@@ -119,18 +138,69 @@ void RemoveNode::revert(Document& doc) {
 
 nlohmann::json RemoveNode::toJson() const { return {{"command", "remove_node"}, {"node", id_}}; }
 
-// --- Connections and positions --------------------------------------------------------------
+// --- Connections, names and positions -------------------------------------------------------
 
-void ConnectNodes::apply(Document& doc) { doc.graph().connect(c_); }
+namespace {
+
+std::string wireText(const PipelineGraph& g, const Connection& c, const char* verb,
+                     const char* between) {
+    return std::string(verb) + " " + nodeLabel(g.node(c.from)) + " " + between + " " +
+           nodeLabel(g.node(c.to));
+}
+
+} // namespace
+
+void ConnectNodes::apply(Document& doc) {
+    doc.graph().connect(c_);
+    text_ = wireText(doc.graph(), c_, "Connect", "to");
+}
 void ConnectNodes::revert(Document& doc) { doc.graph().disconnect(c_); }
 nlohmann::json ConnectNodes::toJson() const {
     return {{"command", "connect"}, {"connection", connectionJson(c_)}};
 }
 
-void DisconnectNodes::apply(Document& doc) { doc.graph().disconnect(c_); }
+void DisconnectNodes::apply(Document& doc) {
+    doc.graph().disconnect(c_);
+    text_ = wireText(doc.graph(), c_, "Disconnect", "from");
+}
 void DisconnectNodes::revert(Document& doc) { doc.graph().connect(c_); }
 nlohmann::json DisconnectNodes::toJson() const {
     return {{"command", "disconnect"}, {"connection", connectionJson(c_)}};
+}
+
+void DisconnectNode::apply(Document& doc) {
+    PipelineGraph& g = doc.graph();
+    const std::vector<Connection> wires = g.connectionsOf(id_);
+    if (wires.empty())
+        throw Error(ErrorCode::InvalidArgument, nodeLabel(g.node(id_)) + " has no connections");
+    for (const Connection& c : wires)
+        g.disconnect(c);
+    removed_ = wires;
+    text_ = "Disconnect " + nodeLabel(g.node(id_));
+}
+
+void DisconnectNode::revert(Document& doc) {
+    for (const Connection& c : removed_)
+        doc.graph().connect(c);
+}
+
+nlohmann::json DisconnectNode::toJson() const {
+    return {{"command", "disconnect_node"}, {"node", id_}};
+}
+
+void RenameNode::apply(Document& doc) {
+    const GraphNode& n = doc.graph().node(id_);
+    const std::string before = n.name;
+    text_ = name_.empty() ? "Clear the name of " + nodeLabel(n)
+                          : "Rename " + nodeLabel(n) + " to '" + name_ + "'";
+    doc.graph().setName(id_, name_);
+    before_ = before;
+}
+
+void RenameNode::revert(Document& doc) { doc.graph().setName(id_, *before_); }
+
+nlohmann::json RenameNode::toJson() const {
+    return {{"command", "rename_node"}, {"node", id_}, {"name", name_}};
 }
 
 MoveNode::MoveNode(NodeId node, double x, double y, std::uint64_t mergeId)
@@ -139,6 +209,7 @@ MoveNode::MoveNode(NodeId node, double x, double y, std::uint64_t mergeId)
 void MoveNode::apply(Document& doc) {
     const GraphNode& n = doc.graph().node(node_);
     const std::pair<double, double> before{n.x, n.y};
+    label_ = nodeLabel(n);
     doc.graph().setPosition(node_, x_, y_);
     if (!before_) before_ = before;
 }
@@ -177,7 +248,7 @@ void HandEditCommand::apply(Document& doc) {
 void HandEditCommand::revert(Document& doc) { doc.graph().setHandEdits(node_, *before_); }
 
 nlohmann::json HandEditCommand::toJson() const {
-    nlohmann::json j = {{"command", text()}, {"node", node_}, {"arguments", arguments()}};
+    nlohmann::json j = {{"command", what()}, {"node", node_}, {"arguments", arguments()}};
     if (after_) j["after"] = handEditsToJson(*after_);
     return j;
 }

@@ -1,6 +1,8 @@
 // The document's edit commands (contract in Command.h): parameter edits, graph edits, source
 // changes and cluster hand edits. Each stores what it changes before and after, so apply and
 // revert are plain assignments and a revert restores the document exactly.
+// Texts name the node they act on, as the history shows them: "Set Volume of Cluster #5",
+// "Add Bake #8", "Merge clusters (Cluster #2)" (nodeLabel, PipelineGraph.h).
 //
 // Cluster hand edits name clusters by their leaf sets (instance ids, HandEdits.h) and act on
 // one Cluster node's HandEdits through the pure functions of ClusterEdits.h; the node is rerun
@@ -53,9 +55,12 @@ private:
     std::vector<std::filesystem::path> after_, before_;
 };
 
+// Adds a node of `kind` at (x, y); with `input` set, the new node's first input is connected to
+// the first output of `input` in the same step (a Bake added after a Cluster node). Throws
+// InvalidArgument when the port types do not match.
 class AddNode : public Command {
 public:
-    AddNode(NodeKind kind, double x = 0.0, double y = 0.0);
+    AddNode(NodeKind kind, double x = 0.0, double y = 0.0, NodeId input = kNoNode);
     std::string text() const override;
     void apply(Document& doc) override;
     void revert(Document& doc) override;
@@ -64,6 +69,7 @@ public:
 
 private:
     GraphNode node_;
+    NodeId input_;
     NodeId nextBefore_ = kNoNode;
 };
 
@@ -84,32 +90,98 @@ private:
 class ConnectNodes : public Command {
 public:
     explicit ConnectNodes(Connection c) : c_(c) {}
-    std::string text() const override { return "Connect nodes"; }
+    std::string text() const override { return text_; }
     void apply(Document& doc) override;
     void revert(Document& doc) override;
     nlohmann::json toJson() const override;
 
 private:
     Connection c_;
+    std::string text_ = "Connect nodes";
 };
 
 class DisconnectNodes : public Command {
 public:
     explicit DisconnectNodes(Connection c) : c_(c) {}
-    std::string text() const override { return "Disconnect nodes"; }
+    std::string text() const override { return text_; }
     void apply(Document& doc) override;
     void revert(Document& doc) override;
     nlohmann::json toJson() const override;
 
 private:
     Connection c_;
+    std::string text_ = "Disconnect nodes";
+};
+
+// Removes every connection of a node (its input and its outputs) in one step.
+class DisconnectNode : public Command {
+public:
+    explicit DisconnectNode(NodeId node) : id_(node) {}
+    std::string text() const override { return text_; }
+    void apply(Document& doc) override;
+    void revert(Document& doc) override;
+    nlohmann::json toJson() const override;
+
+private:
+    NodeId id_;
+    std::vector<Connection> removed_;
+    std::string text_ = "Disconnect node";
+};
+
+// Gives a node a name (empty: none); names label nodes in the editor and pick an Export on the
+// command line (hlod build --export NAME). Nothing is rerun.
+class RenameNode : public Command {
+public:
+    RenameNode(NodeId node, std::string name) : id_(node), name_(std::move(name)) {}
+    std::string text() const override { return text_; }
+    void apply(Document& doc) override;
+    void revert(Document& doc) override;
+    nlohmann::json toJson() const override;
+
+private:
+    NodeId id_;
+    std::string name_;
+    std::optional<std::string> before_;
+    std::string text_ = "Rename node";
+};
+
+// Copies `nodes` (parameters, sources, hand edits, name) with fresh ids to `positions` (one per
+// node, in the order given), in one step: a connection between two copied nodes is copied, and
+// a connection from outside into a copied node feeds its copy too, so "Duplicate Branch" of a
+// Cluster node gives a second Cluster -> Bake -> Export variant fed by the same Import.
+// Connections from a copied node to one that is not copied are not (an input takes one). A
+// copied Export writes to its own folder: the original's with "-ID" appended (ID the copy's id),
+// so two Exports never write one folder. `branch` only chooses the text.
+class DuplicateNodes : public Command {
+public:
+    DuplicateNodes(std::vector<NodeId> nodes, std::vector<std::pair<double, double>> positions,
+                   bool branch = false);
+    std::string text() const override { return text_; }
+    void apply(Document& doc) override;
+    void revert(Document& doc) override;
+    nlohmann::json toJson() const override;
+    // The copies' ids, parallel to the nodes given (valid after the first apply).
+    const std::vector<NodeId>& copies() const { return copies_; }
+
+    // `node` and everything downstream of it, ascending (what Duplicate Branch copies).
+    static std::vector<NodeId> branchFrom(const PipelineGraph& graph, NodeId node);
+
+private:
+    std::vector<NodeId> nodes_;
+    std::vector<std::pair<double, double>> positions_;
+    bool branch_;
+    std::vector<GraphNode> made_; // the copies, as first made (a redo repeats them)
+    std::vector<Connection> wires_;
+    std::vector<NodeId> copies_;
+    NodeId nextBefore_ = kNoNode;
+    std::string text_ = "Duplicate nodes";
 };
 
 // Moves a node in the graph view; a drag with one mergeId is one step.
 class MoveNode : public Command {
 public:
     MoveNode(NodeId node, double x, double y, std::uint64_t mergeId = 0);
-    std::string text() const override { return "Move node"; }
+    std::string text() const override { return "Move " + label_; }
     void apply(Document& doc) override;
     void revert(Document& doc) override;
     std::uint64_t mergeId() const override { return mergeId_; }
@@ -121,6 +193,7 @@ private:
     double x_, y_;
     std::optional<std::pair<double, double>> before_;
     std::uint64_t mergeId_;
+    std::string label_ = "node";
 };
 
 // Base of the cluster hand edits: computes the new HandEdits of `clusterNode` once (edit()),
@@ -128,12 +201,17 @@ private:
 class HandEditCommand : public Command {
 public:
     explicit HandEditCommand(NodeId clusterNode) : node_(clusterNode) {}
+    // "Merge clusters (Cluster #2)": what() and the node.
+    std::string text() const override {
+        return what() + " (Cluster #" + std::to_string(node_) + ")";
+    }
     void apply(Document& doc) override;
     void revert(Document& doc) override;
     nlohmann::json toJson() const override;
     const HandEdits& after() const { return *after_; } // valid after the first apply
 
 protected:
+    virtual std::string what() const = 0; // "Merge clusters"
     virtual HandEdits edit(const HandEdits& current, const Document& doc) const = 0;
     virtual nlohmann::json arguments() const = 0;
     NodeId node_;
@@ -157,7 +235,7 @@ private:
 class MergeClusters : public HandEditCommand {
 public:
     MergeClusters(NodeId clusterNode, std::vector<InstanceSet> clusters);
-    std::string text() const override { return "Merge clusters"; }
+    std::string what() const override { return "Merge clusters"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -171,7 +249,7 @@ private:
 class SplitCluster : public InstanceSetEdit {
 public:
     SplitCluster(NodeId clusterNode, InstanceSet cluster);
-    std::string text() const override { return "Split cluster"; }
+    std::string what() const override { return "Split cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -180,7 +258,7 @@ protected:
 class MoveToCluster : public HandEditCommand {
 public:
     MoveToCluster(NodeId clusterNode, std::vector<InstanceSet> items, InstanceSet target);
-    std::string text() const override { return "Move to cluster"; }
+    std::string what() const override { return "Move to cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -194,7 +272,7 @@ private:
 class LockCluster : public InstanceSetEdit {
 public:
     LockCluster(NodeId clusterNode, InstanceSet cluster);
-    std::string text() const override { return "Lock cluster"; }
+    std::string what() const override { return "Lock cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -203,7 +281,7 @@ protected:
 class UnlockCluster : public InstanceSetEdit {
 public:
     UnlockCluster(NodeId clusterNode, InstanceSet cluster);
-    std::string text() const override { return "Unlock cluster"; }
+    std::string what() const override { return "Unlock cluster"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -212,7 +290,7 @@ protected:
 class ExcludeInstance : public InstanceSetEdit {
 public:
     ExcludeInstance(NodeId clusterNode, InstanceSet instances);
-    std::string text() const override { return "Exclude from HLOD"; }
+    std::string what() const override { return "Exclude from HLOD"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;
@@ -221,7 +299,7 @@ protected:
 class IncludeInstance : public InstanceSetEdit {
 public:
     IncludeInstance(NodeId clusterNode, InstanceSet instances);
-    std::string text() const override { return "Include in HLOD"; }
+    std::string what() const override { return "Include in HLOD"; }
 
 protected:
     HandEdits edit(const HandEdits& current, const Document& doc) const override;

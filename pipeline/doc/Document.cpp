@@ -19,6 +19,11 @@ void Document::execute(std::unique_ptr<Command> command) {
     history_.push(std::move(command), *this);
 }
 
+NodeId Document::importNode() const {
+    const std::vector<NodeId> imports = graph_.nodesOf(NodeKind::Import);
+    return imports.empty() ? kNoNode : imports.front();
+}
+
 std::vector<std::filesystem::path> Document::sources() const {
     const NodeId id = importNode();
     return id == kNoNode ? std::vector<std::filesystem::path>{} : graph_.node(id).sources;

@@ -8,8 +8,8 @@
 // same document: that is what the undo tests compare.
 // View state: a JSON object owned by the editor (camera, selection, panel layout...); the
 // document stores and round-trips it but never interprets it, and changing it is not a command.
-// Threads: single-threaded like the graph; run the graph on the GUI's worker only while no
-// command executes.
+// Threads: single-threaded like the graph; the editor runs a copy of the graph on a worker and
+// brings the outcome back (PipelineGraph::adopt).
 #pragma once
 
 #include <filesystem>
@@ -47,11 +47,10 @@ public:
     bool isDirty() const { return !history_.isClean(); }
     void markSaved() { history_.setClean(); }
 
-    // Shortcuts for the common single-pipeline document.
-    NodeId importNode() const { return graph_.firstOf(NodeKind::Import); }
-    NodeId clusterNode() const { return graph_.firstOf(NodeKind::Cluster); }
-    NodeId bakeNode() const { return graph_.firstOf(NodeKind::Bake); }
-    NodeId exportNode() const { return graph_.firstOf(NodeKind::Export); }
+    // The Import node whose scene the editor opens (the lowest id; kNoNode when none) and its
+    // sources. Every branch is built from the graph (PipelineGraph::run), never from a node
+    // picked by kind.
+    NodeId importNode() const;
     std::vector<std::filesystem::path> sources() const; // of importNode()
     // The tree a Cluster node produced last (what the user sees; nullptr before the first run).
     const ClusterTree* currentTree(NodeId clusterNode) const;

@@ -27,13 +27,25 @@ std::string storedPath(const fs::path& p, const fs::path& folder) {
     return abs.generic_string();
 }
 
-// Applies `f` to the "sources" array of every Import node of a graph JSON.
-template <typename F> void forEachSource(nlohmann::json& graph, F f) {
+// Applies `f` to every path of a graph JSON: the "sources" of Import nodes and the non-empty
+// values of Path parameters (an Export's output folder, a Bake's cache folder).
+template <typename F> void forEachPath(nlohmann::json& graph, F f) {
     if (!graph.is_object() || !graph.contains("nodes") || !graph["nodes"].is_array()) return;
     for (auto& n : graph["nodes"]) {
-        if (!n.is_object() || !n.contains("sources") || !n["sources"].is_array()) continue;
-        for (auto& s : n["sources"]) {
-            if (s.is_string()) s = f(s.get<std::string>());
+        if (!n.is_object()) continue;
+        if (n.contains("sources") && n["sources"].is_array()) {
+            for (auto& s : n["sources"]) {
+                if (s.is_string()) s = f(s.get<std::string>());
+            }
+        }
+        if (!n.contains("params") || !n["params"].is_object()) continue;
+        nlohmann::json& params = n["params"];
+        for (auto it = params.begin(); it != params.end(); ++it) {
+            const ParamDecl* d = findParameter(it.key());
+            nlohmann::json& value = it.value();
+            if (!d || d->type != ParamType::Path || !value.is_string()) continue;
+            const std::string path = value.get<std::string>();
+            if (!path.empty()) value = f(path);
         }
     }
 }
@@ -81,7 +93,7 @@ Document readProject(const fs::path& file, const fs::path& anchor) {
 nlohmann::json projectJson(const Document& doc, const fs::path& projectFile) {
     const fs::path folder = projectFolder(projectFile);
     nlohmann::json graph = doc.graph().toJson();
-    forEachSource(graph, [&](const std::string& s) { return storedPath(s, folder); });
+    forEachPath(graph, [&](const std::string& s) { return storedPath(s, folder); });
     return {{"format", "hlod-project"},
             {"version", kProjectVersion},
             {"generator", std::string("HLOD Studio ") + HLOD_VERSION},
@@ -105,7 +117,7 @@ Document projectFromJson(const nlohmann::json& j, const fs::path& projectFile) {
     if (!j.contains("graph")) bad("key 'graph' is missing");
     const fs::path folder = projectFolder(projectFile);
     nlohmann::json graph = j["graph"];
-    forEachSource(graph, [&](const std::string& s) {
+    forEachPath(graph, [&](const std::string& s) {
         const fs::path p(s);
         return (p.is_absolute() ? p : (folder / p)).lexically_normal().string();
     });

@@ -6,10 +6,11 @@
 //    "graph": PipelineGraph JSON (parameters of every node, hand edits of Cluster nodes,
 //             scene paths of Import nodes stored relative to the project file's folder),
 //    "view": the editor's view state}
-// Paths: on save, a source path is written relative to the project's folder (with '/'
+// Paths: on save, a path (the scene files of Import nodes, and every Path parameter: an Export's
+// output folder, a Bake's cache folder) is written relative to the project's folder (with '/'
 // separators) when it can be expressed so, otherwise absolute; on open, relative paths are
-// resolved against the project's folder. Other path parameters (output, cache) are stored as
-// given.
+// resolved against the project's folder. So a project and its packages move together, and
+// `hlod build PROJECT` writes each Export's package where the editor would, from any folder.
 // Saving is atomic (a temporary file in the same folder, then rename): a failed save leaves the
 // previous file intact. Opening throws hlod::Error naming the file and the problem:
 // FileNotFound (no project, or a scene file it names is missing: both paths in the message),

@@ -1,4 +1,5 @@
-// The engine-ready HLOD package (DESIGN.md "The package"; issue 18, a compact package):
+// The engine-ready HLOD package (README "The package", docs/architecture.md; issue 18, a
+// compact package):
 //   DIR/tileset.json          OGC 3D Tiles 1.1, refine REPLACE, box bounding volumes,
 //                             geometricError = the node's proxy error (0 for leaf groups),
 //                             extras.hlod: placement and a view that frames it (Placement.h)

@@ -1,5 +1,5 @@
-// How the package's tiles and files are laid out (DESIGN.md "The package", issue 18 "a compact
-// package"), before anything is encoded:
+// How the package's tiles and files are laid out (README "The package", docs/architecture.md;
+// issue 18 "a compact package"), before anything is encoded:
 //
 // - Every inner node of the tree is a tile; its content is its proxy (none for a root without
 //   one, ProxyEconomy.h). Geometric errors and REPLACE refinement as before, so a runtime

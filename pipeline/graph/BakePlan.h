@@ -1,6 +1,6 @@
-// The distributed bake's plan (issue 21, DESIGN.md "Distributed bake"): what `hlod plan`
-// writes into the shared cache folder, what `hlod build --shard I/N` reads, and what the final
-// `hlod build` checks before it bakes the nodes above the cut and writes the package.
+// The distributed bake's plan (issue 21; README "Baking on a farm", docs/architecture.md): what
+// `hlod plan` writes into the shared cache folder, what `hlod build --shard I/N` reads, and what
+// the final `hlod build` checks before it bakes the nodes above the cut and writes the package.
 //
 // Folder CACHE/plan/ (the proxies stay in CACHE/, content-addressed, ProxyCache.h):
 //   plan.json      {"format": 1, "id": hex, "shards": N, "bake": Bake parameters (JSON of

@@ -1,7 +1,8 @@
 // What each node kind of the pipeline graph computes (PipelineGraph.h): Import reads the source
 // scene (or the embedded sample, or a package folder), Cluster builds the tree under the hand
-// edits (HandEdits.h, SplitClusters.h), Bake bakes the proxies (disk cache), Export writes the
-// package (ExportStep.h).
+// edits (HandEdits.h, SplitClusters.h), Bake bakes the proxies (disk cache) and applies the proxy
+// economy (ProxyEconomy.h: bakeEconomised), Export writes the package (ExportStep.h). These are
+// the only places the stages are called from a graph: the CLI and the editor both come here.
 #include <chrono>
 #include <optional>
 
@@ -60,8 +61,8 @@ NodeOutput runBake(const GraphNode& node, const NodeOutput& in, const Progress& 
     validate(out.bakeParams.screen);
     // The proxy economy dissolves nodes: the tree downstream is the one the proxies belong to.
     auto tree = std::make_shared<ClusterTree>(*in.tree);
-    out.bake =
-        std::make_shared<const BakeResult>(bakeEconomised(*in.scene, *tree, out.bakeParams, progress));
+    out.bake = std::make_shared<const BakeResult>(
+        bakeEconomised(*in.scene, *tree, out.bakeParams, progress));
     out.tree = std::move(tree);
     out.exported.reset();
     return out;
@@ -88,9 +89,8 @@ NodeOutput runNodeStep(const GraphNode& node, const NodeOutput* input, const Pro
     if (node.kind == NodeKind::Import) return runImport(node, progress);
     auto need = [&](bool ok, const char* what) {
         if (!ok) {
-            throw Error(ErrorCode::InvalidArgument, std::string(toString(node.kind)) + " node " +
-                                                        std::to_string(node.id) + ": no " + what +
-                                                        " from its input");
+            throw Error(ErrorCode::InvalidArgument,
+                        nodeLabel(node) + ": no " + what + " from its input");
         }
     };
     need(input && input->scene, "scene");

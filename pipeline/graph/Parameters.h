@@ -1,7 +1,8 @@
-// Every pipeline parameter, declared once as data (DESIGN.md "How we write code"): its key,
-// label, type, default, range, unit, tooltip, enum choices and CLI flag. The editor's parameter
-// panel, the `hlod build` flags and the project file are all generated from these declarations,
-// so a parameter is added in exactly one place (kParameters in Parameters.cpp).
+// Every pipeline parameter, declared once as data (docs/architecture.md, "The path of a
+// parameter"): its key, label, type, default, range, unit, tooltip, enum choices and CLI flag.
+// The editor's parameter panel, the flags of `hlod build`, `plan` and `bench`, the project file
+// and every check of a value a user gives are generated from these declarations, so a
+// parameter's range, default and unit are written in exactly one place (Parameters.cpp).
 //
 // Values: a ParamValue holds bool (Bool), int (Int), double (Double) or std::string (Enum: one
 // of `choices`; Path: a file or folder, empty allowed; Text: free text checked by the node that
@@ -95,8 +96,7 @@ ParamValues paramsFromJson(NodeKind kind, const nlohmann::json& j,
                            const std::filesystem::path& file = {});
 
 // Conversions to and from the pipeline's parameter structs (hand edits are not parameters:
-// they live in HandEdits.h; both together make the document's HlodSettings, hlodSettingsFrom in
-// pipeline/doc/HlodBuild.h, a layer above).
+// they live in HandEdits.h and reach the clusterer through the Cluster step, NodeSteps.cpp).
 ImportOptions importOptionsFrom(const ParamValues& importValues);
 ClusterParams clusterParamsFrom(const ParamValues& clusterValues);
 // `cache` on and `cache_dir` empty resolve to defaultProxyCacheDir().

@@ -14,11 +14,31 @@ namespace {
     throw Error(ErrorCode::InvalidArgument, what);
 }
 
-std::string nodeName(const GraphNode& n) {
-    return std::string(toString(n.kind)) + " node " + std::to_string(n.id);
-}
+std::string nodeName(const GraphNode& n) { return nodeLabel(n); }
 
 } // namespace
+
+const char* kindLabel(NodeKind kind) {
+    switch (kind) {
+    case NodeKind::Import:
+        return "Import";
+    case NodeKind::Cluster:
+        return "Cluster";
+    case NodeKind::Bake:
+        return "Bake";
+    case NodeKind::Export:
+        return "Export";
+    }
+    return "?";
+}
+
+std::string nodeLabel(const GraphNode& node) {
+    return std::string(kindLabel(node.kind)) + " #" + std::to_string(node.id);
+}
+
+std::string describeNode(const GraphNode& node) {
+    return node.name.empty() ? nodeLabel(node) : nodeLabel(node) + " '" + node.name + "'";
+}
 
 const char* toString(PortType type) {
     switch (type) {
@@ -146,7 +166,8 @@ void PipelineGraph::connect(const Connection& c) {
     }
     if (upstreamOf(c.to, c.toPort) != kNoNode)
         invalid("input '" + ins[c.toPort].name + "' of " + nodeName(to) + " is already connected");
-    if (c.from == c.to || reaches(c.to, c.from)) invalid("the connection would make a cycle");
+    if (c.from == c.to || reaches(c.to, c.from))
+        invalid("connecting " + nodeName(from) + " to " + nodeName(to) + " would make a cycle");
     connections_.insert(std::upper_bound(connections_.begin(), connections_.end(), c), c);
     invalidate(c.to);
 }
@@ -191,6 +212,8 @@ void PipelineGraph::setPosition(NodeId id, double x, double y) {
     n.y = y;
 }
 
+void PipelineGraph::setName(NodeId id, std::string name) { mutableNode(id).name = std::move(name); }
+
 const GraphNode& PipelineGraph::node(NodeId id) const {
     auto it = nodes_.find(id);
     if (it == nodes_.end()) invalid("no node with id " + std::to_string(id));
@@ -217,11 +240,12 @@ std::vector<Connection> PipelineGraph::connectionsOf(NodeId id) const {
     return out;
 }
 
-NodeId PipelineGraph::firstOf(NodeKind kind) const {
+std::vector<NodeId> PipelineGraph::nodesOf(NodeKind kind) const {
+    std::vector<NodeId> out;
     for (const auto& [id, n] : nodes_) {
-        if (n.kind == kind) return id;
+        if (n.kind == kind) out.push_back(id);
     }
-    return kNoNode;
+    return out;
 }
 
 NodeId PipelineGraph::upstreamOf(NodeId id, int port) const {
@@ -245,6 +269,22 @@ std::vector<NodeId> PipelineGraph::downstreamOf(NodeId id) const {
     return {seen.begin(), seen.end()};
 }
 
+std::vector<NodeId> PipelineGraph::branchOf(NodeId id) const {
+    std::vector<NodeId> chain;
+    for (NodeId n = id; n != kNoNode && hasNode(n); n = upstreamOf(n)) {
+        chain.push_back(n);
+        if (inputPorts(node(n).kind).empty()) break;
+    }
+    return {chain.rbegin(), chain.rend()};
+}
+
+NodeId PipelineGraph::upstreamOfKind(NodeId id, NodeKind kind) const {
+    for (NodeId n : branchOf(id)) {
+        if (node(n).kind == kind) return n;
+    }
+    return kNoNode;
+}
+
 bool PipelineGraph::reaches(NodeId from, NodeId to) const {
     const std::vector<NodeId> d = downstreamOf(from);
     return std::find(d.begin(), d.end(), to) != d.end();
@@ -265,6 +305,11 @@ const NodeOutput* PipelineGraph::output(NodeId id) const {
     return it == state_.end() ? nullptr : it->second.output.get();
 }
 
+std::shared_ptr<const NodeOutput> PipelineGraph::sharedOutput(NodeId id) const {
+    auto it = state_.find(id);
+    return it == state_.end() ? nullptr : it->second.output;
+}
+
 void PipelineGraph::invalidate(NodeId id) {
     node(id);
     setStatus(id, NodeStatus::Pending);
@@ -276,6 +321,10 @@ void PipelineGraph::setStatusListener(std::function<void(NodeId, NodeStatus)> li
     listener_ = std::move(listener);
 }
 
+void PipelineGraph::setProgressListener(std::function<void(NodeId, const ProgressInfo&)> listener) {
+    progressListener_ = std::move(listener);
+}
+
 void PipelineGraph::setStatus(NodeId id, NodeStatus s) {
     RunState& st = state_.at(id);
     if (st.status == s) return;
@@ -283,73 +332,5 @@ void PipelineGraph::setStatus(NodeId id, NodeStatus s) {
     if (s != NodeStatus::Failed) st.error.clear();
     if (listener_) listener_(id, s);
 }
-
-std::vector<NodeId> PipelineGraph::runOrder(const std::vector<NodeId>& targets) const {
-    // Depth-first post-order over the upstream closure: inputs before the nodes they feed.
-    std::vector<NodeId> order;
-    std::set<NodeId> done;
-    std::vector<std::pair<NodeId, bool>> stack;
-    for (auto it = targets.rbegin(); it != targets.rend(); ++it)
-        stack.push_back({*it, false});
-    while (!stack.empty()) {
-        auto [id, expanded] = stack.back();
-        stack.pop_back();
-        if (done.count(id)) continue;
-        if (expanded) {
-            done.insert(id);
-            order.push_back(id);
-            continue;
-        }
-        stack.push_back({id, true});
-        const GraphNode& n = node(id);
-        for (int p = static_cast<int>(inputPorts(n.kind).size()) - 1; p >= 0; --p) {
-            const NodeId up = upstreamOf(id, p);
-            if (up != kNoNode && !done.count(up)) stack.push_back({up, false});
-        }
-    }
-    return order;
-}
-
-void PipelineGraph::runNode(NodeId id, const Progress& progress) {
-    const GraphNode& n = node(id);
-    const NodeOutput* input = nullptr;
-    if (!inputPorts(n.kind).empty()) {
-        const NodeId up = upstreamOf(id, 0);
-        if (up == kNoNode) {
-            throw Error(ErrorCode::InvalidArgument, nodeName(n) + ": input '" +
-                                                        inputPorts(n.kind)[0].name +
-                                                        "' is not connected");
-        }
-        input = output(up);
-    }
-    setStatus(id, NodeStatus::Running);
-    auto out = std::make_shared<const NodeOutput>(runNodeStep(n, input, progress));
-    state_.at(id).output = std::move(out);
-    setStatus(id, NodeStatus::UpToDate);
-}
-
-void PipelineGraph::run(const std::vector<NodeId>& targets, const Progress& progress) {
-    for (NodeId id : runOrder(targets)) {
-        RunState& st = state_.at(id);
-        if (st.status == NodeStatus::UpToDate && st.output) continue;
-        try {
-            runNode(id, progress);
-        } catch (const Error& e) {
-            if (e.code() == ErrorCode::Cancelled) {
-                setStatus(id, NodeStatus::Pending);
-            } else {
-                state_.at(id).error = e.what();
-                setStatus(id, NodeStatus::Failed);
-            }
-            throw;
-        } catch (const std::exception& e) {
-            state_.at(id).error = e.what();
-            setStatus(id, NodeStatus::Failed);
-            throw;
-        }
-    }
-}
-
-void PipelineGraph::runAll(const Progress& progress) { run(nodeIds(), progress); }
 
 } // namespace hlod

@@ -55,6 +55,10 @@ struct Reader {
             }
         }
         if (j.contains("hand_edits")) n.edits = handEditsFromJson(j["hand_edits"], file);
+        if (j.contains("name")) {
+            if (!j["name"].is_string()) fail(where + ".name must be a string");
+            n.name = j["name"].get<std::string>();
+        }
         if (j.contains("position")) {
             const auto& p = j["position"];
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
@@ -92,6 +96,7 @@ nlohmann::json PipelineGraph::toJson() const {
                             {"kind", toString(n.kind)},
                             {"params", paramsToJson(n.kind, n.params)},
                             {"position", {n.x, n.y}}};
+        if (!n.name.empty()) j["name"] = n.name;
         if (n.kind == NodeKind::Import) {
             nlohmann::json sources = nlohmann::json::array();
             for (const auto& s : n.sources)

@@ -10,23 +10,28 @@ namespace hlod {
 
 namespace {
 
-void requireRange(const char* name, double value, double lo, double hi, bool openEnds) {
-    const bool ok = openEnds ? (value > lo && value < hi) : (value >= lo && value <= hi);
-    if (!std::isfinite(value) || !ok) {
+// The ranges a user may give are declared once, in pipeline/graph/Parameters.cpp, and checked
+// where a value enters (a flag, a project file, the panel). Here only the domain of the formulas
+// below is guarded, for callers that fill ScreenParams themselves: a division by S, t and H,
+// and tan(fov / 2), which is finite and positive only for 0 < fov < 180 degrees.
+void requirePositive(const char* name, double value) {
+    if (!std::isfinite(value) || value <= 0.0) {
         throw Error(ErrorCode::InvalidArgument,
-                    std::string(name) + " must be within " + (openEnds ? "(" : "[") +
-                        std::to_string(lo) + ", " + std::to_string(hi) + (openEnds ? ")" : "]") +
-                        ", got " + std::to_string(value));
+                    std::string(name) + " must be a positive number, got " + std::to_string(value));
     }
 }
 
 } // namespace
 
 void validate(const ScreenParams& params) {
-    requireRange("screen size", params.screenSize, 1.0, 100000.0, false);
-    requireRange("pixel error", params.pixelError, 0.01, 1000.0, false);
-    requireRange("field of view", params.fovYDegrees, 0.0, 180.0, true);
-    requireRange("viewport height", params.viewportHeight, 1.0, 100000.0, false);
+    requirePositive("screen size", params.screenSize);
+    requirePositive("pixel error", params.pixelError);
+    requirePositive("viewport height", params.viewportHeight);
+    if (!(params.fovYDegrees > 0.0 && params.fovYDegrees < 180.0)) {
+        throw Error(ErrorCode::InvalidArgument,
+                    "field of view must be between 0 and 180 degrees, got " +
+                        std::to_string(params.fovYDegrees));
+    }
 }
 
 double nodeDiameter(const ClusterNode& node) {

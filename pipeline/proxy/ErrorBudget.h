@@ -22,8 +22,9 @@ struct ScreenParams {
     double viewportHeight = 1080.0; // viewport height (px) of the reference camera
 };
 
-// Throws Error(InvalidArgument) naming the parameter when one is out of range:
-// screenSize in [1, 100000], pixelError in [0.01, 1000], fov in (0, 180), height in [1, 100000].
+// Throws Error(InvalidArgument) naming the parameter when the formulas below are undefined for
+// it: S, t and H must be positive, fov within (0, 180) degrees. The ranges a user may choose are
+// the parameter declarations' (pipeline/graph/Parameters.cpp), checked where values enter.
 void validate(const ScreenParams& params);
 
 // Diameter of a node's bounding sphere; the box diagonal when the sphere is unset (radius 0).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include <tbb/info.h>
@@ -362,13 +363,15 @@ struct BakeRun {
 };
 
 void validateParams(const BakeParams& params) {
+    // Only what the bake cannot do without; the ranges a user may choose are declared in
+    // pipeline/graph/Parameters.cpp and checked where a value enters.
     validate(params.screen);
-    if (params.threads < 0 || params.threads > 1024) {
+    if (params.threads < 0) {
         throw Error(ErrorCode::InvalidArgument,
-                    "threads must be within [0, 1024], got " + std::to_string(params.threads));
+                    "threads must not be negative, got " + std::to_string(params.threads));
     }
-    if (!(params.proxyRatio > 0.0 && params.proxyRatio <= 1000.0)) {
-        throw Error(ErrorCode::InvalidArgument, "proxy ratio must be within (0, 1000], got " +
+    if (!(params.proxyRatio > 0.0 && std::isfinite(params.proxyRatio))) {
+        throw Error(ErrorCode::InvalidArgument, "proxy ratio must be a positive number, got " +
                                                     std::to_string(params.proxyRatio));
     }
 }

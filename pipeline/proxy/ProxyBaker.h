@@ -2,7 +2,7 @@
 // every inner node gets a proxy made from its children's representations (their proxies, or
 // the original meshes of leaf children), bottom-up, in parallel.
 //
-// Proxy economy (DESIGN.md): a node keeps its proxy only when it pays for itself, proxy
+// Proxy economy (docs/architecture.md): a node keeps its proxy only when it pays for itself, proxy
 // triangles <= proxyRatio x the triangles of what it replaces. A node whose proxy does not pay
 // is dissolved: its parent is baked from the dissolved node's inputs instead (its children
 // move up), so the parent is judged with its wider set of children. Locked nodes are never

@@ -1,4 +1,4 @@
-// The proxy economy's tree (DESIGN.md "Proxy economy"): after bakeProxies has decided which
+// The proxy economy's tree (docs/architecture.md): after bakeProxies has decided which
 // proxies pay for themselves, the dissolved nodes are removed and their children hang from
 // their nearest kept ancestor (DissolveNodes.h), so every inner node of the result is drawn
 // through its own proxy (or, for a root without a proxy, always refined).

@@ -1,4 +1,4 @@
-// Cutting a cluster tree into the shards of a distributed bake (issue 21, DESIGN.md
+// Cutting a cluster tree into the shards of a distributed bake (issue 21, docs/architecture.md
 // "Distributed bake"). A shard bakes whole subtrees (bakeSubtrees, ProxyBaker.h) into the
 // shared cache; the final step bakes the nodes above the cut, finding everything below in the
 // cache (a proxy is a pure function of its subtree, so the package is the single machine's).

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "FolderCompare.h"
 #include "RunCli.h"
 #include "pipeline/doc/Commands.h"
 #include "pipeline/doc/ProjectFile.h"
@@ -83,7 +84,7 @@ nlohmann::json readJson(const fs::path& file) {
 TEST(ProjectBuild, HandEditsOfTheProjectAreInThePackage) {
     TempDir tmp;
     hlod::Document doc(writeCubes(tmp.path / "scene"));
-    const hlod::NodeId cluster = doc.clusterNode();
+    const hlod::NodeId cluster = hlod::kDefaultCluster;
     doc.execute(std::make_unique<hlod::SetParameter>(cluster, "volume", std::string("aabb")));
     // Cube 0 (x = 0) and cube 5 (x = 200) would never pair on cost: merged by hand.
     doc.execute(
@@ -147,4 +148,136 @@ TEST(ProjectBuild, FlagsKeepTheirRangesAndMessages) {
     const auto g = runCli({"build", "-o", "/tmp/x", "--geo", "north"});
     EXPECT_EQ(g.exitCode, 2);
     EXPECT_NE(g.err.find("--geo expects lat,lon,height"), std::string::npos) << g.err;
+}
+
+namespace {
+
+// The two-branch project of issue 29: Import -> Cluster #2 (sphere) -> Bake #3 (S = 300) ->
+// Export #4 'a' writing pkg-a, and Duplicate Branch of Cluster #2: Cluster #5 (AABB, k = 0) ->
+// Bake #6 (S = 150) -> Export #7 'b' writing pkg-b. Output folders are relative to the project.
+hlod::Document twoBranchProject(const fs::path& dir) {
+    using namespace hlod;
+    Document doc(writeCubes(dir / "scene"));
+    doc.execute(std::make_unique<DuplicateNodes>(
+        DuplicateNodes::branchFrom(doc.graph(), kDefaultCluster),
+        std::vector<std::pair<double, double>>{{220, 120}, {440, 120}, {660, 120}}, true));
+    doc.execute(std::make_unique<SetParameter>(kDefaultExport, "output", (dir / "pkg-a").string()));
+    doc.execute(std::make_unique<SetParameter>(7, "output", (dir / "pkg-b").string()));
+    doc.execute(std::make_unique<RenameNode>(kDefaultExport, "a"));
+    doc.execute(std::make_unique<RenameNode>(7, "b"));
+    doc.execute(std::make_unique<SetParameter>(5, "volume", std::string("aabb")));
+    doc.execute(std::make_unique<SetParameter>(5, "k", 0.0));
+    doc.execute(std::make_unique<SetParameter>(6, "screen_size", 150.0));
+    return doc;
+}
+
+} // namespace
+
+TEST(ProjectBuild, EveryBranchBuildsThePackageASingleBranchBuildWrites) {
+    TempDir tmp;
+    const hlod::Document doc = twoBranchProject(tmp.path);
+    const fs::path project = tmp.path / "two.hlodproj";
+    hlod::saveProject(doc, project);
+    const std::string cache = (tmp.path / "cache").string();
+    const auto r =
+        runCli({"build", project.string(), "--no-dlod", "--cache", cache, "--threads", "2"}, 600);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // One table per branch, each named by its chain.
+    EXPECT_NE(r.out.find("branch:       Import #1 -> Cluster #2 -> Bake #3 -> Export #4 'a'"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("branch:       Import #1 -> Cluster #5 -> Bake #6 -> Export #7 'b'"),
+              std::string::npos)
+        << r.out;
+    // Each package is where the project says (relative to the project's folder).
+    ASSERT_TRUE(fs::exists(tmp.path / "pkg-a" / "tileset.json"));
+    ASSERT_TRUE(fs::exists(tmp.path / "pkg-b" / "tileset.json"));
+
+    // The same settings as single-branch builds of the scene: the same tiles, byte for byte.
+    std::vector<std::string> scene;
+    for (int i = 0; i < 7; ++i)
+        scene.push_back((tmp.path / "scene" / ("cube_" + std::to_string(i) + ".glb")).string());
+    auto single = [&](const std::string& out, std::vector<std::string> flags) {
+        std::vector<std::string> args{"build"};
+        args.insert(args.end(), scene.begin(), scene.end());
+        for (const std::string& f :
+             {std::string("-o"), out, std::string("--no-dlod"), std::string("--cache"), cache,
+              std::string("--threads"), std::string("2")})
+            args.push_back(f);
+        args.insert(args.end(), flags.begin(), flags.end());
+        return runCli(args, 600);
+    };
+    const std::string a = (tmp.path / "single-a").string();
+    const std::string b = (tmp.path / "single-b").string();
+    ASSERT_EQ(single(a, {}).exitCode, 0);
+    ASSERT_EQ(single(b, {"--volume", "aabb", "--k", "0", "--screen-size", "150"}).exitCode, 0);
+    EXPECT_EQ(hlod::test::folderDifference(tmp.path / "pkg-a" / "tiles", fs::path(a) / "tiles"),
+              "");
+    EXPECT_EQ(hlod::test::folderDifference(tmp.path / "pkg-b" / "tiles", fs::path(b) / "tiles"),
+              "");
+    EXPECT_EQ(hlod::test::fileBytes(tmp.path / "pkg-b" / "tileset.json"),
+              hlod::test::fileBytes(fs::path(b) / "tileset.json"));
+    // The branches differ: another volume and screen size make other tiles.
+    EXPECT_NE(
+        hlod::test::folderDifference(tmp.path / "pkg-a" / "tiles", tmp.path / "pkg-b" / "tiles"),
+        "");
+}
+
+TEST(ProjectBuild, ExportPicksABranchAndAGraphThatCannotRunIsRefusedNamingTheNode) {
+    TempDir tmp;
+    hlod::Document doc = twoBranchProject(tmp.path);
+    const fs::path project = tmp.path / "two.hlodproj";
+    hlod::saveProject(doc, project);
+    // -o names one folder: with two Export nodes it needs --export.
+    const auto both = runCli({"build", project.string(), "-o", (tmp.path / "x").string()});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_EQ(both.err, "hlod build: error: -o names one output folder, but the project has 2 "
+                        "Export nodes (Export #4 'a', Export #7 'b'): pick one with --export "
+                        "ID|NAME, or leave out -o to write each to its own folder\n");
+    // --export by name (or id) runs that branch alone, into -o.
+    const fs::path only = tmp.path / "only-b";
+    const auto b = runCli({"build", project.string(), "--export", "b", "-o", only.string(),
+                           "--no-dlod", "--no-cache", "--threads", "2", "--json"},
+                          600);
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    const auto j = nlohmann::json::parse(b.out);
+    EXPECT_EQ(j["branch"]["export"], 7);
+    EXPECT_EQ(j["branch"]["nodes"], nlohmann::json({1, 5, 6, 7}));
+    EXPECT_EQ(j["parameters"]["cluster"]["volume"], "aabb");
+    EXPECT_TRUE(fs::exists(only / "tileset.json"));
+    EXPECT_FALSE(fs::exists(tmp.path / "pkg-a")); // the other branch did not run
+    const auto unknown = runCli({"build", project.string(), "--export", "c"});
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_EQ(unknown.err, "hlod build: error: --export c names no node of the project (its "
+                           "Export nodes: Export #4 'a', Export #7 'b')\n");
+
+    // Both Exports writing one folder: refused before anything runs, naming the node.
+    doc.execute(std::make_unique<hlod::SetParameter>(7, "output", (tmp.path / "pkg-a").string()));
+    hlod::saveProject(doc, project);
+    const auto same = runCli({"build", project.string(), "--no-dlod", "--no-cache"});
+    EXPECT_EQ(same.exitCode, 2);
+    EXPECT_EQ(same.err,
+              "hlod build: error: Export #7 'b' writes the same folder as Export #4 'a' (" +
+                  (tmp.path / "pkg-a").string() + "): give one of them another output folder\n");
+    EXPECT_FALSE(fs::exists(tmp.path / "pkg-a"));
+    // A Bake node without a Cluster node upstream.
+    doc.execute(std::make_unique<hlod::SetParameter>(7, "output", (tmp.path / "pkg-b").string()));
+    doc.execute(std::make_unique<hlod::DisconnectNodes>(hlod::Connection{5, 0, 6, 0}));
+    hlod::saveProject(doc, project);
+    const auto loose = runCli({"build", project.string(), "--no-dlod", "--no-cache"});
+    EXPECT_EQ(loose.exitCode, 2);
+    EXPECT_EQ(loose.err, "hlod build: error: Bake #6 has no Cluster node upstream: connect a "
+                         "Cluster node's clusters output to its input\n");
+}
+
+TEST(ProjectBuild, BenchTakesTheBuildFlagsWithTheirDeclaredRanges) {
+    // One declaration per parameter: hlod bench refuses what hlod build refuses, in its words.
+    const auto build = runCli({"build", "-o", "/tmp/x", "--proxy-ratio", "5"});
+    const auto bench = runCli({"bench", "--out", "/tmp/x", "--proxy-ratio", "5"});
+    EXPECT_EQ(build.exitCode, 2);
+    EXPECT_EQ(bench.exitCode, 2);
+    EXPECT_EQ(build.err, "hlod build: error: --proxy-ratio must be within [0.05, 1], got 5\n");
+    EXPECT_EQ(bench.err, "hlod bench: error: --proxy-ratio must be within [0.05, 1], got 5\n");
+    const auto fov = runCli({"bench", "--out", "/tmp/x", "--screen-size", "0"});
+    EXPECT_EQ(fov.err, "hlod bench: error: --screen-size must be within [1, 100000], got 0\n");
 }

@@ -25,7 +25,7 @@ std::uint64_t value(const ClusterTreeModel& model, Id node, int column) {
 TEST(ClusterTreeModel, TinySceneShowsOneRootAndALeafPerInstance) {
     const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
     const BuiltHlod built = test::buildNow(scene);
-    const ClusterTree& tree = built.build->tree;
+    const ClusterTree& tree = *built.build->tree;
     ClusterTreeModel model;
     model.setBuild(scene, built.build);
     ASSERT_EQ(model.rowCount(), 1);
@@ -37,7 +37,7 @@ TEST(ClusterTreeModel, TinySceneShowsOneRootAndALeafPerInstance) {
     EXPECT_EQ(value(model, tree.root, ClusterTreeModel::LevelColumn),
               static_cast<std::uint64_t>(tree.height()));
     EXPECT_EQ(value(model, tree.root, ClusterTreeModel::ProxyTrianglesColumn),
-              built.build->bake.nodes[tree.root].proxy.triangleCount());
+              built.build->bake->nodes[tree.root].proxy.triangleCount());
 
     // Leaves carry the names of the scene nodes holding their instance: "left" (instance 0),
     // "right" (instance 1) and the scene root "root" (instance 2), one triangle, one, two.
@@ -64,7 +64,7 @@ TEST(ClusterTreeModel, EveryNodeOfTheSampleIsReachableFromTheRootAndQtChecksPass
     QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
     model.setBuild(built.scene, built.build);
     // Walking rows from the root visits each cluster node exactly once.
-    std::vector<int> seen(built.build->tree.nodes.size(), 0);
+    std::vector<int> seen(built.build->tree->nodes.size(), 0);
     std::vector<QModelIndex> stack{model.index(0, 0)};
     while (!stack.empty()) {
         const QModelIndex index = stack.back();

@@ -85,7 +85,7 @@ int orangePixels(const QImage& image) {
 
 TEST_F(DisplayModesTest, ClustersModeColoursTheLevelsCutAndMatchesBaseline) {
     open(test::sampleBuild());
-    const ClusterTree& tree = model->built().build->tree;
+    const ClusterTree& tree = *model->built().build->tree;
     model->setLevel(model->suggestedLevel());
     model->setMode(DisplayMode::Clusters);
     const QImage frame = viewport->grabFrame();
@@ -112,14 +112,14 @@ TEST_F(DisplayModesTest, HlodPreviewDrawsAlgorithmFivesCutAndMatchesBaseline) {
     const QImage frame = viewport->grabFrame();
     // A fresh full traversal for the same camera gives the same cut as the preview's cache.
     const BuiltHlod& built = model->built();
-    std::vector<std::uint64_t> cost(built.build->tree.nodes.size());
+    std::vector<std::uint64_t> cost(built.build->tree->nodes.size());
     for (Id n = 0; n < cost.size(); ++n)
-        cost[n] = built.build->tree.nodes[n].isLeaf()
+        cost[n] = built.build->tree->nodes[n].isLeaf()
                       ? model->subtreeTriangles()[n]
-                      : built.build->bake.nodes[n].proxy.triangleCount();
-    const SelectionTree tree(built.build->tree, cost);
+                      : built.build->bake->nodes[n].proxy.triangleCount();
+    const SelectionTree tree(*built.build->tree, cost);
     const SelectionResult full =
-        selectFull(tree, display->currentCamera(), {built.build->settings.bake.screen.screenSize});
+        selectFull(tree, display->currentCamera(), {built.build->bakeParams.screen.screenSize});
     EXPECT_EQ(display->drawList(), full.drawList);
     EXPECT_EQ(display->lastFrame().drawCalls, full.drawList.size());
     EXPECT_EQ(display->lastFrame().triangles, full.triangles);
@@ -135,20 +135,18 @@ TEST_F(DisplayModesTest, FarAwayOnlyTheRootProxyIsDrawnTintedAsDepthZero) {
     // depth-0 tint, which needs a root proxy; whether the sample's root proxy pays for itself
     // under the default economy is the pipeline's business (a root without one is always
     // refined, ProxyEconomy.h rootHasNoProxy).
-    HlodSettings settings = test::testSettings();
-    settings.bake.proxyRatio = 1.0;
-    open(test::buildNow(test::sampleBuild().scene, settings));
-    ASSERT_FALSE(rootHasNoProxy(model->built().build->tree, model->built().build->bake));
+    open(test::buildNow(test::sampleBuild().scene, {}, {{"proxy_ratio", 1.0}}));
+    ASSERT_FALSE(rootHasNoProxy(*model->built().build->tree, *model->built().build->bake));
     model->setMode(DisplayMode::Hlod);
     model->setTintByDepth(true);
     // Twenty times farther than the fitted view the whole yard spans ~18 px, far below
     // S = 300 px: Algorithm 5 stops at the root.
     viewport->zoom(0.05);
     const QImage frame = viewport->grabFrame();
-    const ClusterTree& tree = model->built().build->tree;
+    const ClusterTree& tree = *model->built().build->tree;
     EXPECT_EQ(display->drawList(), std::vector<Id>{tree.root});
     EXPECT_EQ(display->lastFrame().triangles,
-              model->built().build->bake.nodes[tree.root].proxy.triangleCount());
+              model->built().build->bake->nodes[tree.root].proxy.triangleCount());
     EXPECT_EQ(display->lastFrame().nodesVisited, 1u);
     // Depth 0 is tinted red (0.90, 0.22, 0.20): the centre of the small yard is reddish.
     const QRgb centre = frame.pixel(frame.width() / 2, frame.height() / 2);
@@ -160,10 +158,8 @@ TEST_F(DisplayModesTest, ClickingSelectsTheInstanceUnderTheCursorInEveryMode) {
     const auto scene = std::make_shared<const Scene>(test::makeCubeRow());
     // Every proxy kept (ratio 1): the root proxy of three cubes does not pay for itself under
     // the default proxy economy, and the click on the root proxy below needs it drawn.
-    HlodSettings settings = test::testSettings();
-    settings.bake.proxyRatio = 1.0;
-    open(test::buildNow(scene, settings));
-    const ClusterTree& tree = model->built().build->tree;
+    open(test::buildNow(scene, {}, {{"proxy_ratio", 1.0}}));
+    const ClusterTree& tree = *model->built().build->tree;
     viewport->grabFrame(); // lays out and fits the camera
     for (DisplayMode mode : {DisplayMode::Original, DisplayMode::Clusters}) {
         model->setMode(mode);
@@ -209,14 +205,14 @@ TEST_F(DisplayModesTest, SelectionIsHighlightedAndFollowsBothTrees) {
     EXPECT_EQ(model->selection().instances, std::vector<Id>{0});
     EXPECT_GT(orangePixels(viewport->grabFrame()), 100);
     // ... and the cluster tree shows that cube's leaf.
-    const Id leaf = leafOfInstance(model->built().build->tree, 0);
+    const Id leaf = leafOfInstance(*model->built().build->tree, 0);
     EXPECT_EQ(clusterModel.nodeOf(clusterTree.currentIndex()), leaf);
 
     // A click in the viewport on cube 2 moves both trees to it.
     click(project({4.0, 0.0, 0.0}));
     EXPECT_EQ(sceneModel.nodeOf(sceneTree.currentIndex()), 3u);
     EXPECT_EQ(clusterModel.nodeOf(clusterTree.currentIndex()),
-              leafOfInstance(model->built().build->tree, 2));
+              leafOfInstance(*model->built().build->tree, 2));
     // The cluster root chosen in the cluster tree selects all three cubes; no scene node has
     // exactly those, so the scene tree clears.
     clusterTree.selectionModel()->setCurrentIndex(clusterModel.index(0, 0),

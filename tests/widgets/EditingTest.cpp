@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QItemSelectionModel>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -32,36 +33,38 @@ namespace hlod::widgets {
 namespace {
 
 double clusterK(const Document& doc) {
-    return paramNumber(doc.graph().node(doc.clusterNode()).params, "k");
+    return paramNumber(doc.graph().node(kDefaultCluster).params, "k");
 }
 
 TEST(Editing, ParameterEditsGoThroughTheDocumentAndUndo) {
     ProjectSession session;
     StudioModel model;
-    model.setDocument(&session.document());
+    model.setGraph(&session.document().graph());
     BuildParameters params(*session.undo(), &model);
-    params.setNodes(session.document().clusterNode(), session.document().bakeNode());
-    QObject::connect(&session, &ProjectSession::documentChanged, &model,
-                     &StudioModel::syncSettings);
     std::unique_ptr<QAction> undo(session.undo()->stack()->createUndoAction(nullptr));
     std::unique_ptr<QAction> redo(session.undo()->stack()->createRedoAction(nullptr));
     EXPECT_FALSE(undo->isEnabled());
 
-    auto* k = params.clusterPanel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_k"));
-    auto* volume = params.clusterPanel()->findChild<QComboBox*>(QStringLiteral("param_volume"));
-    auto* size =
-        params.bakePanel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
+    // The dock shows the selected node only: the Cluster node, then the Bake node.
+    params.showNode(kDefaultCluster);
+    auto* k = params.panel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_k"));
+    auto* volume = params.panel()->findChild<QComboBox*>(QStringLiteral("param_volume"));
     ASSERT_NE(k, nullptr);
     ASSERT_NE(volume, nullptr);
-    ASSERT_NE(size, nullptr);
+    EXPECT_EQ(params.panel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size")),
+              nullptr);
     volume->setCurrentText(QStringLiteral("aabb"));
     k->setValue(2.0);
+    params.showNode(kDefaultBake);
+    auto* size = params.panel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
+    ASSERT_NE(size, nullptr);
     size->setValue(450.0);
+    const PipelineGraph& g = session.document().graph();
     EXPECT_EQ(clusterK(session.document()), 2.0);
-    EXPECT_EQ(model.settings().cluster.volume, VolumeType::Aabb);
-    EXPECT_EQ(model.settings().cluster.k, 2.0);
-    EXPECT_EQ(model.settings().bake.screen.screenSize, 450.0);
+    EXPECT_EQ(paramText(g.node(kDefaultCluster).params, "volume"), "aabb");
+    EXPECT_EQ(paramNumber(g.node(kDefaultBake).params, "screen_size"), 450.0);
     EXPECT_EQ(session.document().history().count(), 3u);
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Screen size of Bake #3"));
     EXPECT_TRUE(undo->isEnabled());
     EXPECT_FALSE(redo->isEnabled());
     EXPECT_TRUE(session.isDirty());
@@ -69,17 +72,18 @@ TEST(Editing, ParameterEditsGoThroughTheDocumentAndUndo) {
     session.undo()->stack()->undo(); // screen size
     session.undo()->stack()->undo(); // k
     EXPECT_EQ(clusterK(session.document()), 1.0);
-    EXPECT_EQ(k->value(), 1.0);
     EXPECT_EQ(size->value(), 300.0);
-    EXPECT_EQ(model.settings().cluster.k, 1.0);
-    EXPECT_EQ(model.settings().bake.screen.screenSize, 300.0);
+    EXPECT_EQ(paramNumber(g.node(kDefaultBake).params, "screen_size"), 300.0);
     EXPECT_TRUE(redo->isEnabled());
 
     session.undo()->stack()->redo();
     EXPECT_EQ(clusterK(session.document()), 2.0);
+    params.showNode(kDefaultCluster);
+    k = params.panel()->findChild<QDoubleSpinBox*>(QStringLiteral("param_k"));
     EXPECT_EQ(k->value(), 2.0);
-    EXPECT_EQ(model.settings().cluster.k, 2.0);
-    EXPECT_EQ(volume->currentText(), QStringLiteral("aabb"));
+    EXPECT_EQ(params.panel()->findChild<QComboBox*>(QStringLiteral("param_volume"))->currentText(),
+              QStringLiteral("aabb"));
+    EXPECT_EQ(params.group()->title(), QStringLiteral("Cluster #2 — Clustering"));
 }
 
 TEST(Editing, ProjectRoundTripAndDirtyMark) {
@@ -96,11 +100,9 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
     session.newDocument({scene.toStdString()});
     EXPECT_FALSE(session.isDirty());
     EXPECT_EQ(session.displayName(), QStringLiteral("Untitled"));
-    Document& doc = session.document();
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 3.0)));
+    ASSERT_TRUE(session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 3.0)));
     ASSERT_TRUE(session.undo()->execute(
-        std::make_unique<SetParameter>(doc.bakeNode(), "screen_size", 120.0)));
+        std::make_unique<SetParameter>(kDefaultBake, "screen_size", 120.0)));
     EXPECT_TRUE(session.isDirty());
     ASSERT_EQ(dirty.count(), 1);
     EXPECT_TRUE(dirty.at(0).at(0).toBool());
@@ -120,14 +122,11 @@ TEST(Editing, ProjectRoundTripAndDirtyMark) {
     EXPECT_EQ(QFileInfo(QString::fromStdString(back.sources()[0].string())).canonicalFilePath(),
               QFileInfo(scene).canonicalFilePath());
     EXPECT_EQ(clusterK(back), 3.0);
-    EXPECT_EQ(paramNumber(back.graph().node(back.bakeNode()).params, "screen_size"), 120.0);
-    EXPECT_EQ(reopened.settings().cluster.k, 3.0);
-    EXPECT_EQ(reopened.settings().bake.screen.screenSize, 120.0);
+    EXPECT_EQ(paramNumber(back.graph().node(kDefaultBake).params, "screen_size"), 120.0);
 
     // An edit after the save: dirty, autosaved, recoverable; the plain project keeps k = 3.
     QThread::msleep(20); // the autosave must be strictly newer than the project
-    ASSERT_TRUE(
-        session.undo()->execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 5.0)));
+    ASSERT_TRUE(session.undo()->execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 5.0)));
     EXPECT_TRUE(session.shouldPromptOnClose());
     ASSERT_TRUE(session.autosave());
     EXPECT_TRUE(ProjectSession::hasNewerAutosave(path));
@@ -161,7 +160,7 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     const QModelIndex b = treeModel.index(1, 0, root);
     tree.selectionModel()->select(a, QItemSelectionModel::Select | QItemSelectionModel::Rows);
     tree.selectionModel()->select(b, QItemSelectionModel::Select | QItemSelectionModel::Rows);
-    const ClusterTree& before = sample.build->tree;
+    const ClusterTree& before = *sample.build->tree;
     InstanceSet merged = leafSet(before, treeModel.nodeOf(a));
     const InstanceSet second = leafSet(before, treeModel.nodeOf(b));
     merged.insert(merged.end(), second.begin(), second.end());
@@ -171,60 +170,71 @@ TEST(Editing, MergeTwoClustersByHandRebuildsAndUndoRestores) {
     EXPECT_TRUE(edits.mergeAction()->isEnabled());
 
     ASSERT_TRUE(edits.merge());
-    const HandEdits& now = doc.graph().node(doc.clusterNode()).edits;
+    const HandEdits& now = doc.graph().node(kDefaultCluster).edits;
     ASSERT_EQ(now.locked.size(), 1u);
     EXPECT_EQ(now.locked[0], merged);
     ASSERT_TRUE(test::waitForBuild(model)); // the merge rebuilt the HLOD
-    const ClusterTree& after = model.built().build->tree;
+    const ClusterTree& after = *model.built().build->tree;
     const Id group = findCluster(after, merged);
     ASSERT_NE(group, kNoId); // the merged clusters are exactly one subtree
     EXPECT_TRUE(after.nodes[group].locked);
-    EXPECT_EQ(model.built().build->settings.cluster.lockedGroups.size(), 1u);
+    EXPECT_EQ(model.built().build->cluster.lockedGroups.size(), 1u);
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Merge clusters (Cluster #2)"));
 
     session.undo()->stack()->undo();
-    EXPECT_TRUE(doc.graph().node(doc.clusterNode()).edits.empty());
+    EXPECT_TRUE(doc.graph().node(kDefaultCluster).edits.empty());
     ASSERT_TRUE(test::waitForBuild(model)); // undo rebuilds without the lock
-    EXPECT_TRUE(model.built().build->settings.cluster.lockedGroups.empty());
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Threads"));
+    EXPECT_TRUE(model.built().build->cluster.lockedGroups.empty());
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Set Threads of Bake #3"));
 }
 
-TEST(Editing, ExportDialogWritesThePackage) {
+TEST(Editing, ExportDialogRunsTheExportNodeWithItsFolder) {
     QTemporaryDir dir;
-    ExportRequest request;
-    request.built = test::sampleBuild();
-    request.inputs = {"sample:plant"};
+    ProjectSession session;
+    StudioModel model;
+    ASSERT_TRUE(test::showSampleBuild(session, model));
     const QString out = dir.filePath(QStringLiteral("package"));
-    ExportDialog dialog(request, out);
+    ExportDialog dialog(*session.undo(), &model, kDefaultExport, out);
     dialog.findChild<QCheckBox*>(QStringLiteral("exportDlod"))->setChecked(false);
-    QSignalSpy finished(dialog.exporter(), &PackageExporter::finished);
-    QSignalSpy progressed(dialog.exporter(), &PackageExporter::progressed);
+    QSignalSpy exported(&dialog, &ExportDialog::exported);
+    QSignalSpy progressed(&model, &StudioModel::nodeProgress);
     ASSERT_TRUE(dialog.startExport());
-    EXPECT_TRUE(dialog.exporter()->busy());
-    EXPECT_FALSE(dialog.startExport()); // one export at a time
-    ASSERT_TRUE(finished.wait(120000));
-    EXPECT_FALSE(dialog.exporter()->busy());
+    EXPECT_TRUE(model.building());
+    EXPECT_FALSE(dialog.startExport()); // one run at a time
+    // The folder and the DLOD choice are the Export node's, set as one undoable step.
+    const PipelineGraph& g = session.document().graph();
+    EXPECT_EQ(paramText(g.node(kDefaultExport).params, "output"), out.toStdString());
+    EXPECT_FALSE(paramBool(g.node(kDefaultExport).params, "dlod"));
+    EXPECT_EQ(session.undo()->stack()->undoText(),
+              QStringLiteral("Export Export #4 to %1").arg(out));
+    ASSERT_TRUE(exported.wait(120000));
+    EXPECT_FALSE(model.building());
     EXPECT_EQ(dialog.result(), QDialog::Accepted);
     EXPECT_TRUE(QFileInfo::exists(out + QStringLiteral("/tileset.json")));
     EXPECT_TRUE(QFileInfo::exists(out + QStringLiteral("/hlod.json")));
-    EXPECT_GT(finished.at(0).at(1).toLongLong(), 2); // tileset, hlod.json and tiles
+    EXPECT_GT(exported.at(0).at(1).toLongLong(), 2); // tileset, hlod.json and tiles
     EXPECT_GT(progressed.count(), 0);
+    // The run's status: the Export node is up to date (the Bake node was: only Export ran).
+    EXPECT_EQ(g.status(kDefaultExport), NodeStatus::UpToDate);
+    EXPECT_EQ(g.output(kDefaultExport)->exported->output.string(), out.toStdString());
 }
 
 TEST(Editing, CancelledExportLeavesNoPackage) {
     QTemporaryDir dir;
-    ExportRequest request;
-    request.built = test::sampleBuild();
-    request.inputs = {"sample:plant"};
-    request.dlod = true;
+    ProjectSession session;
+    StudioModel model;
+    ASSERT_TRUE(test::showSampleBuild(session, model));
     const QString out = dir.filePath(QStringLiteral("package"));
-    ExportDialog dialog(request, out);
-    QSignalSpy cancelled(dialog.exporter(), &PackageExporter::cancelled);
-    QSignalSpy finished(dialog.exporter(), &PackageExporter::finished);
+    ExportDialog dialog(*session.undo(), &model, kDefaultExport, out);
+    dialog.findChild<QCheckBox*>(QStringLiteral("exportDlod"))->setChecked(true);
+    QSignalSpy cancelled(&model, &StudioModel::buildCancelled);
+    QSignalSpy finished(&model, &StudioModel::runFinished);
     ASSERT_TRUE(dialog.startExport());
-    dialog.exporter()->cancel();
+    dialog.reject(); // Cancel while it runs: stops the export, the dialog stays
     ASSERT_TRUE(cancelled.wait(120000) || !finished.isEmpty());
     if (!cancelled.isEmpty()) {
         EXPECT_FALSE(QFileInfo::exists(out)); // atomic: a cancelled export writes nothing
+        EXPECT_EQ(session.document().graph().status(kDefaultExport), NodeStatus::Pending);
     }
 }
 

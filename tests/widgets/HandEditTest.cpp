@@ -23,7 +23,6 @@
 
 #include "TestBuilds.h"
 #include "pipeline/doc/Commands.h"
-#include "pipeline/graph/SplitClusters.h"
 #include "pipeline/view/TreeViews.h"
 #include "widgets/ClusterEditActions.h"
 #include "widgets/ClusterTreeModel.h"
@@ -40,7 +39,17 @@
 namespace hlod::widgets {
 namespace {
 
-const HandEdits& editsOf(const Document& doc) { return doc.graph().node(doc.clusterNode()).edits; }
+const HandEdits& editsOf(const Document& doc) { return doc.graph().node(kDefaultCluster).edits; }
+
+// The tree the Cluster node of `doc` gives when its graph runs afresh (what `hlod build
+// PROJECT` runs), over `scene`.
+std::shared_ptr<const ClusterTree> freshTree(const Document& doc,
+                                             std::shared_ptr<const Scene> scene, NodeId node) {
+    PipelineGraph graph = PipelineGraph::fromJson(doc.graph().toJson());
+    test::seedScene(graph, std::move(scene));
+    graph.run({node});
+    return graph.output(node)->tree;
+}
 
 // The editor's pieces as the main window wires them, over the sample scene and its build.
 class HandEdit : public ::testing::Test {
@@ -58,7 +67,7 @@ protected:
         rebuild->setDelay(0);
     }
 
-    const ClusterTree& current() const { return model.built().build->tree; }
+    const ClusterTree& current() const { return *model.built().build->tree; }
     void select(const std::vector<Id>& nodes) {
         tree.selectionModel()->clear();
         for (Id node : nodes)
@@ -121,10 +130,10 @@ TEST_F(HandEdit, SplitHangsTheChildrenFromTheParentAndUndoRestores) {
     // root may have a dissolved parent there, which takes the children and may then pay for
     // its own proxy (the sample's {43, 45} sits in a 12-mesh cluster that only reappears once
     // {43, 45} is split). What is tested here is the split itself, on a tree shown as clustered.
-    ASSERT_TRUE(session.undo()->execute(
-        std::make_unique<SetParameter>(session.document().bakeNode(), "proxy_ratio", 1.0)));
+    ASSERT_TRUE(
+        session.undo()->execute(std::make_unique<SetParameter>(kDefaultBake, "proxy_ratio", 1.0)));
     ASSERT_TRUE(test::waitForBuild(model));
-    ASSERT_EQ(model.built().build->bake.dissolved, 0u);
+    ASSERT_EQ(model.built().build->bake->dissolved, 0u);
     const std::vector<Id> inner = innerChildrenOfRoot();
     ASSERT_FALSE(inner.empty());
     const Id cluster = inner.front();
@@ -139,7 +148,7 @@ TEST_F(HandEdit, SplitHangsTheChildrenFromTheParentAndUndoRestores) {
     ASSERT_TRUE(edits->splitAction()->isEnabled());
     ASSERT_TRUE(edits->split());
     EXPECT_EQ(editsOf(session.document()).dissolved, std::vector<InstanceSet>{splitSet});
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Split cluster"));
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Split cluster (Cluster #2)"));
     ASSERT_TRUE(test::waitForBuild(model));
 
     // The split cluster is gone; each of its children hangs from its parent, the root.
@@ -152,15 +161,12 @@ TEST_F(HandEdit, SplitHangsTheChildrenFromTheParentAndUndoRestores) {
         EXPECT_EQ(after.nodes[c].parent, after.root);
     }
 
-    // The same tree as the pipeline graph's Cluster node (what `hlod build PROJECT` runs),
-    // before the proxy economy dissolves clusters whose proxy does not pay.
-    PipelineGraph graph = session.document().graph();
-    graph.run({session.document().clusterNode()});
-    const ClusterTree& cli = *graph.output(session.document().clusterNode())->tree;
-    const ClusterTree& clustered = model.built().build->clustered;
-    ASSERT_EQ(cli.nodes.size(), clustered.nodes.size());
-    for (Id n = 0; n < cli.nodes.size(); ++n)
-        EXPECT_EQ(leafSet(cli, n), leafSet(clustered, n)) << n;
+    // The same tree as a fresh run of the document's graph (what `hlod build PROJECT` runs).
+    const std::shared_ptr<const ClusterTree> cli =
+        freshTree(session.document(), model.scene(), kDefaultBake);
+    ASSERT_EQ(cli->nodes.size(), after.nodes.size());
+    for (Id n = 0; n < cli->nodes.size(); ++n)
+        EXPECT_EQ(leafSet(*cli, n), leafSet(after, n)) << n;
 
     session.undo()->stack()->undo();
     EXPECT_TRUE(editsOf(session.document()).dissolved.empty());
@@ -207,7 +213,7 @@ TEST_F(HandEdit, DroppingALeafOnAnotherClusterMovesItThere) {
     QSignalSpy requested(&treeModel, &ClusterTreeModel::moveRequested);
     ASSERT_TRUE(treeModel.dropMimeData(data.get(), Qt::MoveAction, -1, -1, onTarget));
     ASSERT_EQ(requested.count(), 1);
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Move to cluster"));
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Move to cluster (Cluster #2)"));
     // The target became a locked group holding the leaf (ClusterEdits.h moveToCluster).
     InstanceSet moved = targetSet;
     moved.push_back(instance);
@@ -253,7 +259,7 @@ TEST_F(HandEdit, IncludeUndoesAnExclude) {
     ASSERT_TRUE(edits->includeAction()->isEnabled());
     ASSERT_TRUE(edits->include());
     EXPECT_TRUE(editsOf(session.document()).excluded.empty());
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Include in HLOD"));
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Include in HLOD (Cluster #2)"));
     ASSERT_TRUE(test::waitForBuild(model));
     EXPECT_NE(current().nodes[findCluster(current(), {instance})].parent, current().root);
     EXPECT_EQ(session.document().history().count(), 4u); // cache, threads, exclude, include
@@ -366,7 +372,7 @@ TEST_F(HandEdit, MoveToClusterMovesTheOtherRowsIntoTheCurrentOneAsADropDoes) {
     makeCurrent(target);
     ASSERT_TRUE(edits->moveAction()->isEnabled());
     edits->moveAction()->trigger();
-    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Move to cluster"));
+    EXPECT_EQ(session.undo()->stack()->undoText(), QStringLiteral("Move to cluster (Cluster #2)"));
     const HandEdits moved = editsOf(session.document());
     InstanceSet group = leafSet(current(), target);
     group.push_back(instance);
@@ -406,15 +412,12 @@ TEST_F(HandEdit, ProjectWithHandEditsReopensWithThem) {
     reopened.open(path);
     EXPECT_EQ(editsOf(reopened.document()), saved);
     // The reopened project builds the tree the editor showed when it was saved.
-    const HlodSettings settings = reopened.settings();
-    EXPECT_EQ(settings.dissolved, saved.dissolved);
-    EXPECT_EQ(settings.cluster.lockedGroups, saved.locked);
-    const ClusterTree again =
-        splitClusters(buildClusterTree(*model.scene(), settings.cluster), settings.dissolved);
-    const ClusterTree& clustered = model.built().build->clustered; // before the proxy economy
-    ASSERT_EQ(again.nodes.size(), clustered.nodes.size());
-    for (Id n = 0; n < again.nodes.size(); ++n)
-        EXPECT_EQ(leafSet(again, n), leafSet(clustered, n)) << n;
+    const std::shared_ptr<const ClusterTree> again =
+        freshTree(reopened.document(), model.scene(), kDefaultBake);
+    const ClusterTree& shown = current();
+    ASSERT_EQ(again->nodes.size(), shown.nodes.size());
+    for (Id n = 0; n < again->nodes.size(); ++n)
+        EXPECT_EQ(leafSet(*again, n), leafSet(shown, n)) << n;
 }
 
 TEST(HandEditViewport, CtrlClickAddsPickedClustersAndARightClickKeepsThem) {
@@ -423,6 +426,7 @@ TEST(HandEditViewport, CtrlClickAddsPickedClustersAndARightClickKeepsThem) {
     const BuiltHlod built = test::buildNow(std::make_shared<const Scene>(test::makeCubeRow()));
     ProjectSession session;
     StudioModel model;
+    model.setGraph(&session.document().graph()); // hand edits act on the shown branch's Cluster
     model.setScene(built.scene);
     model.setBuilt(built);
     ClusterTreeModel treeModel;
@@ -448,8 +452,8 @@ TEST(HandEditViewport, CtrlClickAddsPickedClustersAndARightClickKeepsThem) {
                       static_cast<int>(viewport.height() - d[1] / dpr));
     };
     // Cubes 0 and 2 sit at x = -4 and +4 (TestBuilds.h).
-    const Id leaf0 = leafOfInstance(built.build->tree, 0);
-    const Id leaf2 = leafOfInstance(built.build->tree, 2);
+    const Id leaf0 = leafOfInstance(*built.build->tree, 0);
+    const Id leaf2 = leafOfInstance(*built.build->tree, 2);
     const QPoint cube0 = project({-4.0, 0.0, 0.0});
     const QPoint cube2 = project({4.0, 0.0, 0.0});
     QTest::mouseClick(&viewport, Qt::LeftButton, Qt::ControlModifier, cube0);
@@ -470,7 +474,7 @@ TEST(HandEditViewport, CtrlClickAddsPickedClustersAndARightClickKeepsThem) {
     model.setMode(DisplayMode::Clusters);
     model.setLevel(model.maxLevel());
     viewport.grabFrame();
-    EXPECT_EQ(edits.toggleAt(cube2), built.build->tree.root);
+    EXPECT_EQ(edits.toggleAt(cube2), built.build->tree->root);
 }
 
 } // namespace

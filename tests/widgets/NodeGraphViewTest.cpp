@@ -5,6 +5,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "pipeline/core/Error.h"
 #include "widgets/graph/NodeGraphView.h"
 
 namespace hlod::widgets {
@@ -51,20 +52,52 @@ TEST(NodeGraphView, DraggingFromAnOutputToAnInputRequestsAConnection) {
     EXPECT_EQ(selected.at(0).at(0).value<quint32>(), extra);
 }
 
-TEST(NodeGraphView, StatusOverridesWinOverTheGraphsRunState) {
+TEST(NodeGraphView, StatusesAreTheGraphsWithTheFailureAsTooltip) {
     PipelineGraph g = PipelineGraph::makeDefault();
+    g.disconnect({2, 0, 3, 0});
     NodeGraphView view;
     view.setGraph(&g);
-    EXPECT_EQ(view.shownStatus(2), NodeStatus::Pending);
-    view.setStatuses({{2, NodeStatus::Failed}}, {{2, QStringLiteral("out of memory")}});
-    EXPECT_EQ(view.shownStatus(2), NodeStatus::Failed);
-    EXPECT_EQ(view.shownStatus(3), NodeStatus::Pending); // no override: the graph's
-    auto* header = static_cast<QGraphicsRectItem*>(view.nodeItem(2)->childItems().at(0));
+    EXPECT_EQ(view.shownStatus(3), NodeStatus::Pending);
+    EXPECT_THROW(g.run({3}), Error); // refused: Bake #3 has no Cluster upstream
+    view.setStatusOnly();
+    EXPECT_EQ(view.shownStatus(3), NodeStatus::Failed);
+    auto* header = static_cast<QGraphicsRectItem*>(view.nodeItem(3)->childItems().at(0));
     EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Failed));
-    EXPECT_EQ(view.nodeItem(2)->toolTip(), QStringLiteral("out of memory"));
-    view.refresh(); // redrawing keeps the overrides
-    header = static_cast<QGraphicsRectItem*>(view.nodeItem(2)->childItems().at(0));
+    EXPECT_EQ(view.nodeItem(3)->toolTip(), QString::fromStdString(g.error(3)));
+    view.refresh(); // redrawing shows the same
+    header = static_cast<QGraphicsRectItem*>(view.nodeItem(3)->childItems().at(0));
     EXPECT_EQ(header->brush().color(), NodeGraphView::statusColor(NodeStatus::Failed));
+}
+
+TEST(NodeGraphView, LabelsStayReadableAndPortsAreEasyToHitAtAnyZoom) {
+    // Six nodes in two branches and a view far too small to show them at 1:1.
+    PipelineGraph g = PipelineGraph::makeDefault();
+    const NodeId c = g.addNode(NodeKind::Cluster, 230, 160);
+    const NodeId b = g.addNode(NodeKind::Bake, 460, 160);
+    g.connect({1, 0, c, 0});
+    g.connect({c, 0, b, 0});
+    NodeGraphView view;
+    view.resize(300, 150);
+    view.setGraph(&g);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    view.fitGraph();
+    // Never below kMinScale: the view scrolls instead of shrinking the text.
+    EXPECT_GE(view.transform().m11(), NodeGraphView::kMinScale);
+    // A click kPortHitPx - 1 screen pixels off a port's centre still grabs it.
+    QSignalSpy requested(&view, &NodeGraphView::connectRequested);
+    view.centerOn((view.portPosition(c, true, 0) + view.portPosition(b, false, 0)) / 2.0);
+    const QPoint from = view.mapFromScene(view.portPosition(c, true, 0)) +
+                        QPoint(0, static_cast<int>(NodeGraphView::kPortHitPx) - 1);
+    const QPoint to = view.mapFromScene(view.portPosition(b, false, 0));
+    QTest::mousePress(view.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(view.viewport(), to);
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, to);
+    ASSERT_EQ(requested.count(), 1);
+    EXPECT_EQ(requested.at(0).at(0).value<Connection>(), (Connection{c, 0, b, 0}));
+    // Each box names its node and its main parameters.
+    EXPECT_EQ(view.titleOf(b), QStringLiteral("Bake #%1").arg(b));
+    EXPECT_EQ(view.summaryOf(c), QStringLiteral("sphere, ≤ 8 children"));
 }
 
 TEST(NodeGraphView, SelectionSurvivesARedrawAndConnectionsAreFoundUnderTheCursor) {

@@ -19,14 +19,14 @@ TEST(ParameterPanel, EditorsFollowTheDeclarations) {
     Document doc;
     UndoAdapter undo(doc);
     ParameterPanel panel(undo);
-    panel.setNode(doc.bakeNode());
+    panel.setNode(kDefaultBake);
     auto* proxy = panel.findChild<QComboBox*>(QStringLiteral("param_proxy"));
     ASSERT_NE(proxy, nullptr);
     EXPECT_EQ(proxy->count(), 3); // decimate, remesh, sloppy
     EXPECT_EQ(proxy->currentText(), QStringLiteral("decimate"));
     auto* size = panel.findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
     ASSERT_NE(size, nullptr);
-    EXPECT_EQ(size->value(), 300.0); // DESIGN.md default S
+    EXPECT_EQ(size->value(), 300.0); // the thesis' S, the declared default
     EXPECT_EQ(size->minimum(), 1.0);
     EXPECT_EQ(size->maximum(), 100000.0);
     EXPECT_EQ(size->suffix(), QStringLiteral(" px"));
@@ -34,7 +34,7 @@ TEST(ParameterPanel, EditorsFollowTheDeclarations) {
     EXPECT_NE(panel.findChild<QSlider*>(QStringLiteral("param_screen_size_slider")), nullptr);
     EXPECT_NE(panel.findChild<QSpinBox*>(QStringLiteral("param_threads")), nullptr);
     EXPECT_NE(panel.findChild<QCheckBox*>(QStringLiteral("param_cache")), nullptr);
-    panel.setNode(doc.clusterNode());
+    panel.setNode(kDefaultCluster);
     EXPECT_EQ(panel.findChild<QComboBox*>(QStringLiteral("param_proxy")), nullptr);
     EXPECT_NE(panel.findChild<QComboBox*>(QStringLiteral("param_volume")), nullptr);
 }
@@ -43,13 +43,13 @@ TEST(ParameterPanel, EachEditIsAnUndoStepAndUndoUpdatesTheEditor) {
     Document doc;
     UndoAdapter undo(doc);
     ParameterPanel panel(undo);
-    panel.setNode(doc.clusterNode());
+    panel.setNode(kDefaultCluster);
     auto* volume = panel.findChild<QComboBox*>(QStringLiteral("param_volume"));
     auto* k = panel.findChild<QDoubleSpinBox*>(QStringLiteral("param_k"));
     volume->setCurrentText(QStringLiteral("aabb"));
     k->setValue(2.0);
     EXPECT_EQ(doc.history().count(), 2u);
-    EXPECT_EQ(paramText(doc.graph().node(doc.clusterNode()).params, "volume"), "aabb");
+    EXPECT_EQ(paramText(doc.graph().node(kDefaultCluster).params, "volume"), "aabb");
     undo.stack()->undo();
     EXPECT_EQ(k->value(), 1.0); // the editor shows the restored value
     undo.stack()->undo();
@@ -60,7 +60,7 @@ TEST(ParameterPanel, ASliderDragIsOneUndoStep) {
     Document doc;
     UndoAdapter undo(doc);
     ParameterPanel panel(undo);
-    panel.setNode(doc.clusterNode());
+    panel.setNode(kDefaultCluster);
     auto* slider = panel.findChild<QSlider*>(QStringLiteral("param_k_slider"));
     ASSERT_NE(slider, nullptr);
     slider->setSliderDown(true);    // as a mouse press does: sliderPressed
@@ -69,9 +69,9 @@ TEST(ParameterPanel, ASliderDragIsOneUndoStep) {
     slider->setSliderDown(false);
     EXPECT_EQ(doc.history().count(), 1u);
     EXPECT_EQ(undo.stack()->count(), 1);
-    EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(doc.clusterNode()).params, "k"), 4.0);
+    EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(kDefaultCluster).params, "k"), 4.0);
     undo.stack()->undo();
-    EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(doc.clusterNode()).params, "k"), 1.0);
+    EXPECT_DOUBLE_EQ(paramNumber(doc.graph().node(kDefaultCluster).params, "k"), 1.0);
 }
 
 TEST(ParameterPanel, WideRangesGetALogarithmicSlider) {
@@ -90,13 +90,13 @@ TEST(ParameterPanel, WideRangesGetALogarithmicSlider) {
     Document doc;
     UndoAdapter undo(doc);
     ParameterPanel panel(undo);
-    panel.setNode(doc.bakeNode());
+    panel.setNode(kDefaultBake);
     auto* slider = panel.findChild<QSlider*>(QStringLiteral("param_screen_size_slider"));
     auto* spin = panel.findChild<QDoubleSpinBox*>(QStringLiteral("param_screen_size"));
     ASSERT_NE(slider, nullptr);
     EXPECT_EQ(slider->value(), 495);
     slider->setValue(600);
-    EXPECT_EQ(paramNumber(doc.graph().node(doc.bakeNode()).params, "screen_size"), 1000.0);
+    EXPECT_EQ(paramNumber(doc.graph().node(kDefaultBake).params, "screen_size"), 1000.0);
     EXPECT_EQ(spin->value(), 1000.0);
     spin->setValue(50.0); // typing a value moves the slider to its decade
     EXPECT_EQ(slider->value(), ParameterPanel::sliderPosition(size, 50.0));

@@ -1,6 +1,7 @@
-// Tests of widgets/StudioModel and HlodBuilder: background builds, cancellation, failures,
-// statistics, and the selection mapping between instances, scene nodes and (one or several)
-// cluster nodes.
+// Tests of widgets/StudioModel and GraphRunner: background runs of the graph, cancellation,
+// failures, statistics, branches (the shown Bake node, the kept builds, statuses brought into the
+// graph), and the selection mapping between instances, scene nodes and (one or several) cluster
+// nodes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,10 +36,22 @@ std::shared_ptr<const Scene> openBuiltTinyScene(StudioModel& model) {
     return scene;
 }
 
+// `model` running `graph` (seeded with `scene`) and showing its Bake node.
+void runGraph(StudioModel& model, PipelineGraph& graph, std::shared_ptr<const Scene> scene) {
+    model.setScene(scene);
+    model.setGraph(&graph);
+    model.setShownBake(kDefaultBake);
+}
+
 TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     StudioModel model;
-    model.setScene(sample());
-    model.setSettings(test::testSettings());
+    const auto scene = sample();
+    PipelineGraph graph = test::testGraph(scene);
+    runGraph(model, graph, scene);
+    std::vector<std::pair<quint32, NodeStatus>> statuses;
+    QObject::connect(&model, &StudioModel::nodeStatusChanged, [&](quint32 node) {
+        statuses.push_back({node, graph.status(node)});
+    });
     QSignalSpy finished(&model, &StudioModel::buildFinished);
     QSignalSpy progress(&model, &StudioModel::buildProgress);
     // The event loop keeps running while the worker bakes: a timer on the GUI thread ticks.
@@ -53,12 +66,21 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     EXPECT_GT(progress.count(), 0);
     EXPECT_FALSE(model.building());
     ASSERT_TRUE(model.hasBuild());
+    // The run's statuses came into the graph as they happened: Cluster then Bake ran (the Import
+    // node held the scene already), each running, then up to date.
+    EXPECT_EQ(statuses,
+              (std::vector<std::pair<quint32, NodeStatus>>{{kDefaultCluster, NodeStatus::Running},
+                                                           {kDefaultCluster, NodeStatus::UpToDate},
+                                                           {kDefaultBake, NodeStatus::Running},
+                                                           {kDefaultBake, NodeStatus::UpToDate}}));
+    EXPECT_EQ(graph.status(kDefaultExport), NodeStatus::Pending); // not asked for
 
     const BuiltHlod& built = model.built();
-    const ClusterTree& tree = built.build->tree;
+    EXPECT_EQ(built.build, graph.sharedOutput(kDefaultBake));
+    const ClusterTree& tree = *built.build->tree;
     // The rows the statistics dock shows are exactly BakeStats' rows for this build.
     const GeometryStats original = originalStats(*model.scene());
-    const GeometryStats hlod = hlodStats(*model.scene(), tree, built.build->bake, "x");
+    const GeometryStats hlod = hlodStats(*model.scene(), tree, *built.build->bake, "x");
     EXPECT_EQ(built.original.triangles, original.triangles);
     EXPECT_EQ(built.original.meshes, original.meshes);
     EXPECT_EQ(built.hlod.triangles, hlod.triangles);
@@ -70,8 +92,8 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
     // less such a root.
     std::size_t meshes = 0;
     for (Id n = 0; n < tree.nodes.size(); ++n)
-        if (tree.nodes[n].isLeaf() || built.build->bake.nodes[n].hasProxy) ++meshes;
-    EXPECT_EQ(meshes, tree.nodes.size() - (rootHasNoProxy(tree, built.build->bake) ? 1 : 0));
+        if (tree.nodes[n].isLeaf() || built.build->bake->nodes[n].hasProxy) ++meshes;
+    EXPECT_EQ(meshes, tree.nodes.size() - (rootHasNoProxy(tree, *built.build->bake) ? 1 : 0));
     EXPECT_EQ(built.hlod.meshes, meshes);
     EXPECT_EQ(built.hlod.version, "HLOD, sphere");
     // The root's subtree holds every instance's triangles.
@@ -81,8 +103,9 @@ TEST(StudioModel, BuildsInTheBackgroundAndKeepsTheStatisticsOfBakeStats) {
 
 TEST(StudioModel, CancelEndsWithoutAResultAndTheNextBuildWorks) {
     StudioModel model;
-    model.setScene(sample());
-    model.setSettings(test::testSettings());
+    const auto scene = sample();
+    PipelineGraph graph = test::testGraph(scene);
+    runGraph(model, graph, scene);
     QSignalSpy finished(&model, &StudioModel::buildFinished);
     QSignalSpy cancelled(&model, &StudioModel::buildCancelled);
     // Cancel right after the run started: the worker thread is already going, the flag is
@@ -95,6 +118,9 @@ TEST(StudioModel, CancelEndsWithoutAResultAndTheNextBuildWorks) {
     EXPECT_EQ(finished.count(), 0);
     EXPECT_FALSE(model.hasBuild());
     EXPECT_FALSE(model.building());
+    // Nothing is left running in the graph: the cancelled node is pending again.
+    for (NodeId id : graph.nodeIds())
+        EXPECT_NE(graph.status(id), NodeStatus::Running) << id;
 
     model.build();
     ASSERT_TRUE(finished.wait(kBuildWaitMs));
@@ -104,8 +130,9 @@ TEST(StudioModel, CancelEndsWithoutAResultAndTheNextBuildWorks) {
 
 TEST(StudioModel, ACancelWhileTheResultIsOnItsWayStillEndsWithoutAResult) {
     StudioModel model;
-    model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
-    model.setSettings(test::testSettings());
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    PipelineGraph graph = test::testGraph(scene);
+    runGraph(model, graph, scene);
     QSignalSpy finished(&model, &StudioModel::buildFinished);
     QSignalSpy cancelled(&model, &StudioModel::buildCancelled);
     model.build();
@@ -123,16 +150,60 @@ TEST(StudioModel, ACancelWhileTheResultIsOnItsWayStillEndsWithoutAResult) {
     EXPECT_FALSE(model.building());
 }
 
-TEST(StudioModel, BadParametersFailWithAMessageAndNoResult) {
+TEST(StudioModel, AGraphThatCannotRunFailsNamingTheNodeAndMarksItFailed) {
     StudioModel model;
-    model.setScene(std::make_shared<const Scene>(test::makeTinyScene()));
-    HlodSettings settings = test::testSettings();
-    settings.cluster.maxChildren = 1; // ClusterParams wants at least 2
-    model.setSettings(settings);
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    PipelineGraph graph = test::testGraph(scene);
+    graph.disconnect({kDefaultCluster, 0, kDefaultBake, 0});
+    runGraph(model, graph, scene);
     QSignalSpy failed(&model, &StudioModel::buildFailed);
     model.build();
     ASSERT_TRUE(failed.wait(kBuildWaitMs));
-    EXPECT_FALSE(failed.front().front().toString().isEmpty());
+    EXPECT_EQ(failed.front().front().toString(),
+              QStringLiteral("Bake #3 has no Cluster node upstream: connect a Cluster node's "
+                             "clusters output to its input"));
+    EXPECT_FALSE(model.hasBuild());
+    // The refusal is the node's status, with its message (the Pipeline dock shows it).
+    EXPECT_EQ(graph.status(kDefaultBake), NodeStatus::Failed);
+    EXPECT_EQ(graph.error(kDefaultBake), failed.front().front().toString().toStdString());
+}
+
+TEST(StudioModel, EachBranchKeepsItsBuildAndShowingOneShowsItAtOnce) {
+    // Two branches from one import: the default sphere chain and an AABB k = 2 one.
+    StudioModel model;
+    const auto scene = std::make_shared<const Scene>(test::makeTinyScene());
+    PipelineGraph graph = test::testGraph(scene);
+    const NodeId cluster = graph.addNode(NodeKind::Cluster);
+    const NodeId bake = graph.addNode(NodeKind::Bake);
+    graph.connect({kDefaultImport, 0, cluster, 0});
+    graph.connect({cluster, 0, bake, 0});
+    graph.setParam(cluster, "volume", std::string("aabb"));
+    graph.setParam(cluster, "k", 2.0);
+    for (const auto& [key, value] : test::testBakeValues())
+        graph.setParam(bake, key, value);
+    runGraph(model, graph, scene);
+    EXPECT_EQ(model.bakeNodes(), (std::vector<NodeId>{kDefaultBake, bake}));
+    EXPECT_EQ(model.branchLabel(bake), QStringLiteral("Cluster #5 → Bake #6"));
+    QSignalSpy finished(&model, &StudioModel::runFinished);
+    model.buildAll();
+    ASSERT_TRUE(finished.wait(kBuildWaitMs));
+    EXPECT_EQ(graph.status(kDefaultBake), NodeStatus::UpToDate);
+    EXPECT_EQ(graph.status(bake), NodeStatus::UpToDate);
+    ASSERT_NE(model.builtOf(bake), nullptr);
+    EXPECT_EQ(model.built().bakeNode, kDefaultBake); // the shown one
+    EXPECT_EQ(model.built().build->cluster.volume, VolumeType::Sphere);
+    // Showing the other branch shows its build without a run.
+    QSignalSpy shown(&model, &StudioModel::buildFinished);
+    model.setShownBake(bake);
+    EXPECT_EQ(shown.count(), 1);
+    EXPECT_FALSE(model.building());
+    EXPECT_EQ(model.built().bakeNode, bake);
+    EXPECT_EQ(model.built().build->cluster.volume, VolumeType::Aabb);
+    EXPECT_EQ(model.shownCluster(), cluster);
+    // A branch never built shows nothing until it is.
+    const NodeId third = graph.addNode(NodeKind::Bake);
+    graph.connect({cluster, 0, third, 0});
+    model.setShownBake(third);
     EXPECT_FALSE(model.hasBuild());
 }
 
@@ -140,7 +211,7 @@ TEST(StudioModel, SelectionMapsBetweenInstancesSceneNodesAndClusters) {
     StudioModel model;
     openBuiltTinyScene(model);
     ASSERT_TRUE(model.hasBuild());
-    const ClusterTree& tree = model.built().build->tree;
+    const ClusterTree& tree = *model.built().build->tree;
     QSignalSpy changed(&model, &StudioModel::selectionChanged);
 
     // Node 2 "group" holds node 3 "right", which holds instance 1 only.
@@ -169,7 +240,7 @@ TEST(StudioModel, SeveralClusterNodesSelectTheUnionOfTheirInstances) {
     StudioModel model;
     openBuiltTinyScene(model);
     ASSERT_TRUE(model.hasBuild());
-    const ClusterTree& tree = model.built().build->tree;
+    const ClusterTree& tree = *model.built().build->tree;
     const Id leaf0 = leafOfInstance(tree, 0);
     const Id leaf2 = leafOfInstance(tree, 2);
     QSignalSpy changed(&model, &StudioModel::selectionChanged);

@@ -13,20 +13,42 @@
 
 namespace hlod::widgets::test {
 
-HlodSettings testSettings() {
+ParamValues testBakeValues() {
     // The declared defaults (pipeline/graph/Parameters.cpp: sphere, decimate, S = 300 px, level
-    // growth 2, proxy ratio 0.35), which a new document and `hlod build` use, not the library
-    // structs' (ClusterParams{}.levelGrowth is 1, the thesis' merges): a test that shows a build
-    // of these next to a document must be showing what the document would build.
+    // growth 2, proxy ratio 0.35), which a new document and `hlod build` use: a test that shows a
+    // build of these next to a document must be showing what the document would build.
     ParamValues bake = defaultValues(NodeKind::Bake);
     bake["cache"] = false;
     bake["threads"] = 2;
-    return hlodSettingsFrom(defaultValues(NodeKind::Cluster), bake);
+    return bake;
 }
 
-BuiltHlod buildNow(std::shared_ptr<const Scene> scene, const HlodSettings& settings) {
-    auto build = std::make_shared<HlodBuild>(buildHlod(*scene, settings));
-    return withStatistics(std::move(scene), std::move(build));
+void seedScene(PipelineGraph& graph, std::shared_ptr<const Scene> scene, NodeId import) {
+    NodeOutput out;
+    out.scene = std::move(scene);
+    out.inputs = {"test scene"};
+    graph.adopt(import, graph.definition(import), NodeStatus::UpToDate,
+                std::make_shared<const NodeOutput>(std::move(out)));
+}
+
+PipelineGraph testGraph(std::shared_ptr<const Scene> scene, const ParamValues& cluster,
+                        const ParamValues& bake) {
+    PipelineGraph g = PipelineGraph::makeDefault();
+    for (const auto& [key, value] : testBakeValues())
+        g.setParam(kDefaultBake, key, value);
+    for (const auto& [key, value] : bake)
+        g.setParam(kDefaultBake, key, value);
+    for (const auto& [key, value] : cluster)
+        g.setParam(kDefaultCluster, key, value);
+    seedScene(g, std::move(scene));
+    return g;
+}
+
+BuiltHlod buildNow(std::shared_ptr<const Scene> scene, const ParamValues& cluster,
+                   const ParamValues& bake) {
+    PipelineGraph g = testGraph(std::move(scene), cluster, bake);
+    g.run({kDefaultBake});
+    return withStatistics(kDefaultBake, g.sharedOutput(kDefaultBake));
 }
 
 Scene makeCubeRow() {
@@ -48,13 +70,30 @@ Scene makeCubeRow() {
     return scene;
 }
 
-const BuiltHlod& sampleBuild() {
-    static const BuiltHlod built = buildNow(std::make_shared<const Scene>(makeSampleScene()));
-    return built;
+namespace {
+
+// The sample's run: the Bake node's build and the Cluster node's output it came from.
+struct SampleRun {
+    BuiltHlod built;
+    std::shared_ptr<const NodeOutput> cluster;
+};
+
+const SampleRun& sampleRun() {
+    static const SampleRun run = [] {
+        PipelineGraph g = testGraph(std::make_shared<const Scene>(makeSampleScene()));
+        g.run({kDefaultBake});
+        return SampleRun{withStatistics(kDefaultBake, g.sharedOutput(kDefaultBake)),
+                         g.sharedOutput(kDefaultCluster)};
+    }();
+    return run;
 }
 
+} // namespace
+
+const BuiltHlod& sampleBuild() { return sampleRun().built; }
+
 bool useTestBakeParameters(ProjectSession& session) {
-    const NodeId bake = session.document().bakeNode();
+    const NodeId bake = kDefaultBake;
     return session.undo()->execute(std::make_unique<SetParameter>(bake, "cache", false)) &&
            session.undo()->execute(std::make_unique<SetParameter>(bake, "threads", 2));
 }
@@ -62,14 +101,21 @@ bool useTestBakeParameters(ProjectSession& session) {
 bool showSampleBuild(ProjectSession& session, StudioModel& model) {
     const BuiltHlod& sample = sampleBuild();
     if (!useTestBakeParameters(session)) return false;
-    model.setDocument(&session.document());
+    PipelineGraph& graph = session.document().graph();
+    seedScene(graph, sample.scene);
+    // The sample's build is this document's: its Cluster and Bake nodes are up to date with it.
+    graph.adopt(kDefaultCluster, graph.definition(kDefaultCluster), NodeStatus::UpToDate,
+                sampleRun().cluster);
+    graph.adopt(kDefaultBake, graph.definition(kDefaultBake), NodeStatus::UpToDate, sample.build);
+    model.setGraph(&graph);
     model.setScene(sample.scene);
+    model.setShownBake(kDefaultBake);
     model.setBuilt(sample);
     return true;
 }
 
 bool waitForBuild(StudioModel& model) {
-    QSignalSpy finished(&model, &StudioModel::buildFinished);
+    QSignalSpy finished(&model, &StudioModel::runFinished);
     if (!model.building()) {
         QSignalSpy started(&model, &StudioModel::buildStarted);
         if (!started.wait(5000)) return false;

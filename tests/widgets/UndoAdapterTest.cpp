@@ -11,17 +11,17 @@ namespace hlod::widgets {
 namespace {
 
 double kOf(const Document& doc) {
-    return paramNumber(doc.graph().node(doc.clusterNode()).params, "k");
+    return paramNumber(doc.graph().node(kDefaultCluster).params, "k");
 }
 
 TEST(UndoAdapter, QtUndoAndRedoDriveTheDocument) {
     Document doc;
     UndoAdapter undo(doc);
     QSignalSpy changed(&undo, &UndoAdapter::documentChanged);
-    ASSERT_TRUE(undo.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 2.0)));
-    ASSERT_TRUE(undo.execute(std::make_unique<LockCluster>(doc.clusterNode(), InstanceSet{0, 1})));
+    ASSERT_TRUE(undo.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 2.0)));
+    ASSERT_TRUE(undo.execute(std::make_unique<LockCluster>(kDefaultCluster, InstanceSet{0, 1})));
     EXPECT_EQ(undo.stack()->count(), 2);
-    EXPECT_EQ(undo.stack()->undoText(), QStringLiteral("Lock cluster"));
+    EXPECT_EQ(undo.stack()->undoText(), QStringLiteral("Lock cluster (Cluster #2)"));
     undo.stack()->undo();
     undo.stack()->undo();
     EXPECT_EQ(kOf(doc), 1.0); // the default
@@ -37,11 +37,11 @@ TEST(UndoAdapter, AMergedDragIsOneEntryAndFailuresAreReported) {
     UndoAdapter undo(doc);
     const std::uint64_t drag = doc.history().newMergeId();
     for (double k : {0.5, 1.5, 2.5})
-        undo.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", k, drag));
+        undo.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", k, drag));
     EXPECT_EQ(undo.stack()->count(), 1);
     EXPECT_EQ(doc.history().count(), 1u);
     QSignalSpy failed(&undo, &UndoAdapter::commandFailed);
-    EXPECT_FALSE(undo.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 99.0)));
+    EXPECT_FALSE(undo.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 99.0)));
     ASSERT_EQ(failed.count(), 1);
     EXPECT_EQ(failed.at(0).at(0).toString(), QStringLiteral("k must be within [0, 16], got 99"));
     EXPECT_EQ(undo.stack()->count(), 1);

@@ -21,20 +21,25 @@ bool fail(QString* error, const QString& message) {
 
 } // namespace
 
-CompareConfig configOf(const HlodSettings& settings) {
+CompareConfig configOf(const PipelineGraph& graph, NodeId bake) {
+    ParamValues cluster = defaultValues(NodeKind::Cluster);
+    ParamValues baking = defaultValues(NodeKind::Bake);
+    if (graph.hasNode(bake)) {
+        baking = graph.node(bake).params;
+        if (const NodeId c = graph.upstreamOfKind(bake, NodeKind::Cluster); c != kNoNode)
+            cluster = graph.node(c).params;
+    }
     CompareConfig c;
-    c.volume = settings.cluster.volume;
-    c.k = settings.cluster.k;
-    c.screenSize = settings.bake.screen.screenSize;
+    c.volume = volumeTypeFromString(paramText(cluster, "volume"));
+    c.k = paramNumber(cluster, "k");
+    c.screenSize = paramNumber(baking, "screen_size");
     return c;
 }
 
-HlodSettings applyConfig(const HlodSettings& base, const CompareConfig& config) {
-    HlodSettings s = base;
-    s.cluster.volume = config.volume;
-    s.cluster.k = config.k; // ignored by the other volumes, kept so the settings stay stable
-    s.bake.screen.screenSize = config.screenSize;
-    return s;
+void applyConfig(PipelineGraph& graph, NodeId cluster, NodeId bake, const CompareConfig& config) {
+    graph.setParam(cluster, "volume", std::string(toString(config.volume)));
+    graph.setParam(cluster, "k", config.k);
+    graph.setParam(bake, "screen_size", config.screenSize);
 }
 
 QString configLabel(const CompareConfig& config, bool withScreenSize) {
@@ -66,8 +71,12 @@ QString configSpec(const CompareConfig& config) {
     return spec + QLatin1Char('@') + number(config.screenSize);
 }
 
-bool parseConfig(const QString& text, const HlodSettings& base, CompareConfig& out,
-                 QString* error) {
+bool parseSide(const QString& text, const CompareConfig& base, CompareSide& out, QString* error) {
+    static const QRegularExpression node(QStringLiteral(R"(^#([0-9]{1,9})$)"));
+    if (const QRegularExpressionMatch m = node.match(text.trimmed()); m.hasMatch()) {
+        out = {static_cast<NodeId>(m.captured(1).toUInt()), base};
+        return true;
+    }
     // volume, then optionally "-k" and a number, then optionally "@" and a number.
     static const QRegularExpression pattern(
         QStringLiteral(R"(^(current|sphere|octree|original|aabb))"
@@ -78,11 +87,11 @@ bool parseConfig(const QString& text, const HlodSettings& base, CompareConfig& o
     if (!m.hasMatch())
         return fail(error, QCoreApplication::translate(
                                "CompareConfig",
-                               "\"%1\" is not a configuration: use sphere, aabb, aabb-kK, "
-                               "octree, original or current, optionally followed by @S (screen "
-                               "size in pixels)")
+                               "\"%1\" is not a configuration: use #N (Bake node N), sphere, "
+                               "aabb, aabb-kK, octree, original or current, optionally followed "
+                               "by @S (screen size in pixels)")
                                .arg(text));
-    CompareConfig c = configOf(base);
+    CompareConfig c = base;
     const QString volume = m.captured(1);
     if (volume != QLatin1String("current")) c.volume = volumeTypeFromString(volume.toStdString());
     if (m.hasCaptured(2)) {
@@ -110,12 +119,12 @@ bool parseConfig(const QString& text, const HlodSettings& base, CompareConfig& o
                             .arg(s.min)
                             .arg(s.max));
     }
-    out = c;
+    out = {kNoNode, c};
     return true;
 }
 
-bool parseConfigPair(const QString& text, const HlodSettings& base,
-                     std::pair<CompareConfig, CompareConfig>& out, QString* error) {
+bool parseSidePair(const QString& text, const CompareConfig& base,
+                   std::pair<CompareSide, CompareSide>& out, QString* error) {
     const QStringList parts = text.split(QLatin1Char(':'));
     if (parts.size() != 2)
         return fail(error,
@@ -123,31 +132,28 @@ bool parseConfigPair(const QString& text, const HlodSettings& base,
                         "CompareConfig", "\"%1\" is not a pair of configurations LEFT:RIGHT, e.g. "
                                          "sphere:aabb-k2")
                         .arg(text));
-    std::pair<CompareConfig, CompareConfig> pair;
-    if (!parseConfig(parts[0], base, pair.first, error) ||
-        !parseConfig(parts[1], base, pair.second, error))
+    std::pair<CompareSide, CompareSide> pair;
+    if (!parseSide(parts[0], base, pair.first, error) ||
+        !parseSide(parts[1], base, pair.second, error))
         return false;
     out = pair;
     return true;
 }
 
-std::pair<CompareConfig, CompareConfig> defaultConfigs(const HlodSettings& document) {
-    const CompareConfig left = configOf(document);
-    CompareConfig right = left;
-    if (left.volume == VolumeType::Aabb) {
+std::pair<CompareSide, CompareSide> defaultSides(const PipelineGraph& graph, NodeId shown,
+                                                 const std::vector<NodeId>& bakes) {
+    const CompareConfig base = configOf(graph, shown);
+    const CompareSide left{shown, base};
+    for (NodeId other : bakes)
+        if (other != shown) return {left, {other, configOf(graph, other)}};
+    CompareConfig right = base;
+    if (base.volume == VolumeType::Aabb) {
         right.volume = VolumeType::Sphere;
     } else {
         right.volume = VolumeType::Aabb;
         right.k = 2.0; // the thesis' most compact AABB variant
     }
-    return {left, right};
-}
-
-bool sameSettings(const HlodSettings& a, const HlodSettings& b) {
-    return paramsFrom(a.cluster) == paramsFrom(b.cluster) &&
-           paramsFrom(a.bake) == paramsFrom(b.bake) &&
-           a.cluster.lockedGroups == b.cluster.lockedGroups &&
-           a.cluster.excluded == b.cluster.excluded;
+    return {left, {kNoNode, right}};
 }
 
 } // namespace hlod::widgets

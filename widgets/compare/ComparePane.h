@@ -1,22 +1,27 @@
-// One side of the comparison view: a configuration selector (volume, k, screen size), the
-// build status with progress and Cancel, and a Viewport showing that configuration's HLOD
-// preview with its own frame counters (draw calls, triangles, nodes visited).
+// One side of the comparison view: what it shows (a Bake node of the document, or "Custom": a
+// quick configuration laid over a base branch, CompareConfig.h), a configuration selector
+// (volume, k, screen size), the build status with progress and Cancel, and a Viewport showing
+// that side's HLOD preview with its own frame counters (draw calls, triangles, nodes visited).
 //
 // The pane reuses the editor's pieces instead of copying them: a StudioModel of its own holds
-// the pane's scene and build (its HlodBuilder builds in the background, its front cache runs
-// the per-frame LOD selection) and a DisplayController in HLOD preview mode draws it into the
-// Viewport. The pane itself keeps only the base settings and its CompareConfig.
+// the pane's scene and build (its GraphRunner runs the graph in the background, its front cache
+// runs the per-frame LOD selection) and a DisplayController in HLOD preview mode draws it into
+// the Viewport. A Bake-node side runs the document's own graph (its statuses show in the
+// Pipeline dock, and the editor finds the node built); a Custom side runs a copy of the
+// document's graph with a temporary branch: copies of the base branch's Cluster and Bake nodes
+// with the configuration applied, fed by the same Import (whose scene the copy already holds).
+// Editing the selector of a Bake-node side turns it into a Custom side over that node.
 // Builds: rebuild() drops the shown result first, so a cancelled or failed build leaves the
-// pane empty rather than showing a result of another configuration. Changing the selector
-// rebuilds this pane only. Without a scene nothing builds.
-// Lifetime: destroying the pane cancels and joins its build (StudioModel's HlodBuilder).
+// pane empty rather than showing a result of another configuration. documentChanged() rebuilds
+// only when what the side builds changed (its node's definition, PipelineGraph.h). Without a
+// scene nothing builds.
+// Lifetime: destroying the pane cancels and joins its build (StudioModel's GraphRunner).
 #pragma once
 
 #include <memory>
 
 #include <QWidget>
 
-#include "pipeline/doc/HlodBuild.h"
 #include "widgets/compare/CompareConfig.h"
 
 class QComboBox;
@@ -45,15 +50,21 @@ public:
     // `upAxis` (0 X, 1 Y, 2 Z) orients navigation.
     void setScene(std::shared_ptr<const Scene> scene, int upAxis);
     const std::shared_ptr<const Scene>& scene() const;
-    // The settings the configuration is laid over (the document's); does not build.
-    void setBaseSettings(const HlodSettings& base) { base_ = base; }
-    const HlodSettings& baseSettings() const { return base_; }
-    // Shows `config` in the selector; rebuilds when it differs from the current one and
+    // The document's graph (not owned: it must outlive the pane or be unset) and the Bake node a
+    // Custom side is laid over; does not build.
+    void setDocument(PipelineGraph* document, NodeId baseBake);
+    NodeId baseBake() const { return base_; }
+    // Shows `side` in the selector; rebuilds when it differs from the current one and
     // `rebuildIfChanged`.
-    void setConfig(const CompareConfig& config, bool rebuildIfChanged = true);
-    const CompareConfig& config() const { return config_; }
-    // What this pane builds with: the base settings with its configuration.
-    HlodSettings settings() const { return applyConfig(base_, config_); }
+    void setSide(const CompareSide& side, bool rebuildIfChanged = true);
+    const CompareSide& side() const { return side_; }
+    // The configuration of the side: the Custom one, or that of its Bake node's branch.
+    CompareConfig config() const;
+    // "Bake #6: AABB k=2" or "AABB k=2 (over Bake #3)".
+    QString label(bool withScreenSize = false) const;
+    // The document changed: refreshes the list of Bake nodes and rebuilds when what the side
+    // builds changed.
+    void documentChanged();
 
     void rebuild();
     // Stops the build: the pane is Cancelled (and not building) at once, with no result; the
@@ -63,12 +74,13 @@ public:
     bool building() const { return state_ == State::Building; }
     // The build shown (null before one finished, after a cancel or a failure).
     const BuiltHlod* built() const;
-    // Show "Use these settings" (only when there is a document to apply them to).
+    // Offer "Use These Settings" (a Custom side, with a document to apply them to).
     void setUseVisible(bool visible);
 
     StudioModel* model() const { return model_.get(); }
     Viewport* viewport() const { return viewport_; }
     DisplayController* display() const { return display_.get(); }
+    QComboBox* sourceBox() const { return source_; }
     QComboBox* volumeBox() const { return volume_; }
     QDoubleSpinBox* kBox() const { return k_; }
     QDoubleSpinBox* screenSizeBox() const { return screen_; }
@@ -88,19 +100,30 @@ Q_SIGNALS:
     void useRequested();
 
 private:
+    void readSource();
     void readSelector();
     void writeSelector();
+    void fillSources();
+    // The graph and node this side builds (the document's, or the copy with the temporary
+    // branch, remade from the document); kNoNode when it cannot build.
+    std::pair<PipelineGraph*, NodeId> target();
+    void updateUse();
     void setState(State state, const QString& text);
     void onProgress(const QString& stage, qint64 done, qint64 total);
     void onFinished();
 
-    HlodSettings base_;
-    CompareConfig config_;
+    PipelineGraph* document_ = nullptr;
+    NodeId base_ = kNoNode;
+    CompareSide side_;
+    PipelineGraph temp_;          // a Custom side's copy of the document with its branch
+    std::string builtDefinition_; // of what the last rebuild() ran
+    bool useWanted_ = false;
     State state_ = State::Empty;
     std::unique_ptr<StudioModel> model_;
     Viewport* viewport_ = nullptr;
     std::unique_ptr<DisplayController> display_;
     QLabel* title_ = nullptr;
+    QComboBox* source_ = nullptr;
     QComboBox* volume_ = nullptr;
     QDoubleSpinBox* k_ = nullptr;
     QDoubleSpinBox* screen_ = nullptr;

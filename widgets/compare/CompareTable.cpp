@@ -5,7 +5,7 @@
 #include <QLocale>
 
 #include "widgets/DisplayController.h"
-#include "widgets/HlodBuilder.h"
+#include "widgets/GraphRunner.h"
 
 namespace hlod::widgets {
 
@@ -55,8 +55,8 @@ void CompareTable::setSideTitle(Side side, const QString& title) {
 void CompareTable::setBuilt(Side side, const BuiltHlod* built) {
     auto& v = values_;
     if (built && built->build) {
-        v[NodesRow][side] = built->build->tree.nodes.size();
-        v[ProxyTrianglesRow][side] = built->build->bake.proxyTriangles;
+        v[NodesRow][side] = built->build->tree->nodes.size();
+        v[ProxyTrianglesRow][side] = built->build->bake->proxyTriangles;
         v[PackageRow][side] = built->package.bytesOnDisk;
     } else {
         for (Row row : {DrawCallsRow, TrianglesRow, NodesRow, ProxyTrianglesRow, PackageRow})

@@ -55,7 +55,7 @@ CompareView::CompareView(QWidget* parent) : QWidget(parent) {
     fit_ = new QPushButton(tr("Fit View"));
     fit_->setToolTip(tr("Show the whole scene in both views (F)"));
     rebuild_ = new QPushButton(tr("Rebuild Both"));
-    rebuild_->setToolTip(tr("Build both sides again with the document's current settings"));
+    rebuild_->setToolTip(tr("Build both sides again from the document's current graph"));
     close_ = new QPushButton(tr("Close"));
     close_->setToolTip(tr("Close the comparison (Esc); its builds stop"));
     message_ = new QLabel;
@@ -106,15 +106,15 @@ CompareView::~CompareView() {
     link_ = nullptr;
 }
 
-void CompareView::open(std::shared_ptr<const Scene> scene, const HlodSettings& base,
-                       const std::pair<CompareConfig, CompareConfig>& configs) {
+void CompareView::open(std::shared_ptr<const Scene> scene, PipelineGraph* document, NodeId baseBake,
+                       const std::pair<CompareSide, CompareSide>& sides) {
     upAxis_ = scene ? suggestedUpAxis(*scene) : 1;
     for (ComparePane* pane : {left_, right_}) {
         pane->setScene(scene, upAxis_);
-        pane->setBaseSettings(base);
+        pane->setDocument(document, baseBake);
     }
-    left_->setConfig(configs.first, false);
-    right_->setConfig(configs.second, false);
+    left_->setSide(sides.first, false);
+    right_->setSide(sides.second, false);
     message_->clear();
     updateTitles();
     // From the front, right and above (the editor's default view) until copyCamera() gives
@@ -128,12 +128,16 @@ void CompareView::open(std::shared_ptr<const Scene> scene, const HlodSettings& b
 
 const std::shared_ptr<const Scene>& CompareView::scene() const { return left_->scene(); }
 
-void CompareView::setBaseSettings(const HlodSettings& base) {
+void CompareView::detach() {
     for (ComparePane* pane : {left_, right_}) {
-        const HlodSettings before = pane->settings();
-        pane->setBaseSettings(base);
-        if (!sameSettings(before, pane->settings())) pane->rebuild();
+        pane->setDocument(nullptr, kNoNode);
+        pane->setScene(nullptr, upAxis_);
     }
+}
+
+void CompareView::documentChanged() {
+    for (ComparePane* pane : {left_, right_})
+        pane->documentChanged();
 }
 
 void CompareView::setUndo(UndoAdapter* undo) {
@@ -205,7 +209,7 @@ void CompareView::onStateChanged(ComparePane* pane) {
 void CompareView::useSettings(ComparePane* pane) {
     if (!undo_) return;
     std::unique_ptr<SetParameters> command =
-        useConfigurationCommand(undo_->document(), pane->config());
+        useConfigurationCommand(undo_->document(), pane->baseBake(), pane->config());
     const QString label = configLabel(pane->config(), true);
     if (!command) {
         message_->setText(tr("The document already uses %1.").arg(label));
@@ -219,10 +223,8 @@ void CompareView::useSettings(ComparePane* pane) {
 void CompareView::updateTitles() {
     // The screen size is named only when the sides differ in it.
     const bool withS = left_->config().screenSize != right_->config().screenSize;
-    table_->setSideTitle(CompareTable::Left,
-                         tr("Left: %1").arg(configLabel(left_->config(), withS)));
-    table_->setSideTitle(CompareTable::Right,
-                         tr("Right: %1").arg(configLabel(right_->config(), withS)));
+    table_->setSideTitle(CompareTable::Left, tr("Left: %1").arg(left_->label(withS)));
+    table_->setSideTitle(CompareTable::Right, tr("Right: %1").arg(right_->label(withS)));
 }
 
 } // namespace hlod::widgets

@@ -1,15 +1,17 @@
-// The comparison view of the editor (issue #7): two configurations of the same scene side by
-// side (for example sphere against AABB k=2, the thesis' comparison of chapter 6), each in its
-// own pane with its HLOD preview and frame counters, the two cameras linked both ways, and a
+// The comparison view of the editor (issue #7, issue 29): two branches of the same scene side
+// by side (for example sphere against AABB k=2, the thesis' comparison of chapter 6), each in
+// its own pane with its HLOD preview and frame counters, the two cameras linked both ways, and a
 // statistics table below (draw calls and triangles of the current frame, tree nodes, proxy
 // triangles, package size) with the better value of each row highlighted.
 //
-// Both sides build in the background at once (one HlodBuilder each, inside each pane's
-// StudioModel) with the document's settings and the side's configuration, so they reuse the
-// document's proxy cache like the editor's own builds. Changing one side's selector rebuilds
-// that side only; setBaseSettings() (the document changed) rebuilds only the sides whose
-// effective settings changed. With an UndoAdapter set, each pane offers "Use These Settings",
-// which applies its configuration to the document as one undoable command (SetParameters).
+// A side is any Bake node of the document, or a quick configuration over a branch that the view
+// builds as a temporary branch (CompareConfig.h, ComparePane.h). Both sides build in the
+// background at once (one GraphRunner each, inside each pane's StudioModel) through the
+// document's graph, so they reuse the document's proxy cache and outputs like the editor's own
+// runs. Changing one side's selector rebuilds that side only; documentChanged() rebuilds only
+// the sides whose node changed. With an UndoAdapter set, a quick-configuration pane offers "Use
+// These Settings", which applies its configuration to the branch it is laid over as one
+// undoable command (SetParameters).
 // The view shows BuiltHlods and holds no pipeline state of its own; closing it cancels the
 // builds, destroying it also joins them.
 // Keys: F fits both views to the scene (the panes' viewports show no SceneActors of their
@@ -22,7 +24,6 @@
 
 #include <QWidget>
 
-#include "pipeline/doc/HlodBuild.h"
 #include "widgets/compare/CompareConfig.h"
 
 class QCheckBox;
@@ -43,12 +44,17 @@ public:
     explicit CompareView(QWidget* parent = nullptr);
     ~CompareView() override;
 
-    // Shows `scene` with `configs` (left, right) over `base` and builds both sides.
-    void open(std::shared_ptr<const Scene> scene, const HlodSettings& base,
-              const std::pair<CompareConfig, CompareConfig>& configs);
+    // Shows `scene` (what `document`'s first Import gives) with `sides` (left, right), quick
+    // configurations laid over the branch of `baseBake`, and builds both sides. `document` is
+    // not owned: it must outlive the view or be replaced by another open().
+    void open(std::shared_ptr<const Scene> scene, PipelineGraph* document, NodeId baseBake,
+              const std::pair<CompareSide, CompareSide>& sides);
     const std::shared_ptr<const Scene>& scene() const;
-    // New base settings; rebuilds each side whose settings change.
-    void setBaseSettings(const HlodSettings& base);
+    // The document changed; rebuilds each side whose node changed.
+    void documentChanged();
+    // Lets go of the document and the scene at once (runs dropped, nothing shown): its content
+    // is about to be replaced. open() takes them again.
+    void detach();
     // The document "Use These Settings" applies to; null hides the buttons.
     void setUndo(UndoAdapter* undo);
 

@@ -33,11 +33,12 @@ nlohmann::json SetParameters::toJson() const {
     return {{"command", "set_parameters"}, {"text", text_}, {"parts", parts}};
 }
 
-std::unique_ptr<SetParameters> useConfigurationCommand(const Document& doc,
+std::unique_ptr<SetParameters> useConfigurationCommand(const Document& doc, NodeId bakeNode,
                                                        const CompareConfig& config) {
     std::vector<std::unique_ptr<SetParameter>> parts;
-    const NodeId clusterNode = doc.clusterNode();
-    const NodeId bakeNode = doc.bakeNode();
+    if (!doc.graph().hasNode(bakeNode)) return nullptr;
+    const NodeId clusterNode = doc.graph().upstreamOfKind(bakeNode, NodeKind::Cluster);
+    if (clusterNode == kNoNode) return nullptr;
     const ParamValues& cluster = doc.graph().node(clusterNode).params;
     const ParamValues& bake = doc.graph().node(bakeNode).params;
     const std::string volume = toString(config.volume);
@@ -48,8 +49,8 @@ std::unique_ptr<SetParameters> useConfigurationCommand(const Document& doc,
     if (paramNumber(bake, "screen_size") != config.screenSize)
         parts.push_back(std::make_unique<SetParameter>(bakeNode, "screen_size", config.screenSize));
     if (parts.empty()) return nullptr;
-    const std::string text =
-        "Use " + configLabel(config, true).toStdString() + " from the comparison";
+    const std::string text = "Use " + configLabel(config, true).toStdString() + " for " +
+                             nodeLabel(doc.graph().node(bakeNode)) + " from the comparison";
     return std::make_unique<SetParameters>(text, std::move(parts));
 }
 

@@ -1,5 +1,6 @@
 // "Use these settings" of the comparison view: one undoable document command that sets the
-// volume, k and screen size of a CompareConfig on the document's Cluster and Bake nodes.
+// volume, k and screen size of a CompareConfig on a branch of the document (the Bake node the
+// quick configuration was laid over, and its Cluster node).
 //
 // Why a command of its own: the three values are separate SetParameter commands
 // (pipeline/doc/Commands.h), and the user chose one configuration, so Edit ▸ Undo must take
@@ -31,9 +32,11 @@ private:
     std::vector<std::unique_ptr<SetParameter>> parts_;
 };
 
-// The command that gives `doc` the values of `config` (only those that differ: k is left alone
-// unless the volume is AABB); null when the document already has them all.
-std::unique_ptr<SetParameters> useConfigurationCommand(const Document& doc,
+// The command that gives the branch of `bake` the values of `config` (only those that differ: k
+// is left alone unless the volume is AABB); null when it has them all (or `bake` has no Cluster
+// node upstream). SetParameters is also what several parameter edits of one gesture use (the
+// export dialog's folder and DLOD choice).
+std::unique_ptr<SetParameters> useConfigurationCommand(const Document& doc, NodeId bake,
                                                        const CompareConfig& config);
 
 } // namespace hlod::widgets

@@ -1,25 +1,23 @@
-// Reruns the HLOD build when the document's build settings change (issue #7: "changing a
-// parameter reruns only what is downstream, reusing the bake cache"; "proxies of edited
-// clusters are rebaked, the rest reused").
+// Reruns the shown branch when the document changes (issue #7: "changing a parameter reruns
+// only what is downstream, reusing the bake cache"; "proxies of edited clusters are rebaked, the
+// rest reused"; issue 29: the editor runs the document's graph).
 //
-// After every document change (a parameter edit, a hand edit, an undo, a redo) the settings the
-// document gives (settingsOf: parameters and hand edits) are compared with those of the last
-// build the model started, or, before any, of the build it shows. When they differ, a build
-// starts after delay() ms; further changes within the delay restart it, so a slider drag or a
-// burst of edits is one build, and a change back to the built settings cancels it. What the
-// build then redoes is HlodBuilder's business: the tree is reused when only bake parameters
-// changed, and the baker takes every unchanged proxy from the disk cache.
-// Nothing is built before the scene's first build (none shown and none started), nor for a
-// document being replaced (new, open: the scene reloads). A failed or cancelled build is not
-// retried until the settings change again.
+// After every document change (a parameter edit, a hand edit, a graph edit, an undo, a redo)
+// and whenever another Bake node is shown, the shown Bake node's status in the graph is looked
+// at: when it is Pending (the change reached it, or it was never built), a run of it starts
+// after delay() ms; further changes within the delay restart the timer, so a slider drag or a
+// burst of edits is one run. What the run then redoes is the graph's business: only the Pending
+// nodes upstream of the shown one run, and the baker takes every unchanged proxy from the disk
+// cache. A change that does not reach the shown branch (another branch's parameter) starts
+// nothing.
+// A run that writes packages (File ▸ Export) is not interrupted: the rebuild waits for it.
+// Nothing is built before the scene's first build (StudioModel::everBuilt), nor for a document
+// being replaced (new, open: the scene reloads). A failed run is not retried until a change
+// makes the node Pending again; a cancelled one waits for the next change.
 #pragma once
-
-#include <optional>
 
 #include <QObject>
 #include <QTimer>
-
-#include "pipeline/doc/HlodBuild.h"
 
 namespace hlod::widgets {
 
@@ -37,20 +35,19 @@ public:
     int delay() const { return timer_.interval(); }
     // A rebuild is scheduled and has not started yet.
     bool pending() const { return timer_.isActive(); }
-    // Whether the document's settings differ from the last build's (started or shown).
-    bool settingsChanged() const;
+    // Whether the shown Bake node needs a run (Pending in the graph, none running for it).
+    bool shownNeedsRun() const;
 
 Q_SIGNALS:
     void rebuildScheduled();
 
 private:
-    void onDocumentChanged();
+    void onChange();
     void fire();
 
     ProjectSession* session_;
     StudioModel* model_;
     QTimer timer_;
-    std::optional<HlodSettings> requested_; // settings of the last build started
 };
 
 } // namespace hlod::widgets

@@ -8,24 +8,6 @@
 
 namespace hlod::widgets {
 
-HlodSettings settingsOf(const Document& doc) {
-    const PipelineGraph& g = doc.graph();
-    // A graph edited down to no Cluster or Bake node builds with that stage's defaults.
-    const NodeId clusterId = doc.clusterNode();
-    const NodeId bakeId = doc.bakeNode();
-    const ParamValues clusterParams =
-        clusterId == kNoNode ? defaultValues(NodeKind::Cluster) : g.node(clusterId).params;
-    const ParamValues bakeParams =
-        bakeId == kNoNode ? defaultValues(NodeKind::Bake) : g.node(bakeId).params;
-    HlodSettings s = hlodSettingsFrom(clusterParams, bakeParams);
-    if (clusterId != kNoNode) {
-        const HandEdits& edits = g.node(clusterId).edits;
-        applyConstraints(edits, s.cluster);
-        s.dissolved = edits.dissolved;
-    }
-    return s;
-}
-
 ProjectSession::ProjectSession(QObject* parent)
     : QObject(parent), doc_(std::make_unique<Document>()),
       undo_(std::make_unique<UndoAdapter>(*doc_)), timer_(new QTimer(this)) {
@@ -65,14 +47,18 @@ void ProjectSession::replace(Document doc, const QString& path, bool recovered) 
     Q_EMIT projectChanged();
 }
 
-void ProjectSession::newDocument(std::vector<std::filesystem::path> sources) {
+void ProjectSession::newDocument(std::vector<std::filesystem::path> sources, NodeId keepFrom) {
     Document doc(std::move(sources));
-    // A new scene keeps the parameters the user chose (not the hand edits: they name instances
-    // of the previous scene).
-    for (NodeId id : {doc.clusterNode(), doc.bakeNode()}) {
-        const GraphNode& before = doc_->graph().node(id);
-        for (const auto& [key, value] : before.params)
-            if (key != "output") doc.graph().setParam(id, key, value);
+    const PipelineGraph& old = doc_->graph();
+    if (keepFrom != kNoNode && old.hasNode(keepFrom)) {
+        const std::pair<NodeKind, NodeId> kept[] = {{NodeKind::Cluster, kDefaultCluster},
+                                                    {NodeKind::Bake, kDefaultBake}};
+        for (const auto& [kind, target] : kept) {
+            const NodeId from = old.upstreamOfKind(keepFrom, kind);
+            if (from == kNoNode) continue;
+            for (const auto& [key, value] : old.node(from).params)
+                doc.graph().setParam(target, key, value);
+        }
     }
     replace(std::move(doc), {}, false);
 }
@@ -112,7 +98,5 @@ bool ProjectSession::autosave() {
     writeAutosave(*doc_, path_.toStdString());
     return true;
 }
-
-HlodSettings ProjectSession::settings() const { return settingsOf(*doc_); }
 
 } // namespace hlod::widgets

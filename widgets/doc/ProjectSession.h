@@ -1,5 +1,5 @@
 // The editor's open project: one hlod::Document (parameters, sources, hand edits, view state;
-// the single source of truth, DESIGN.md "Undo belongs to the document"), its UndoAdapter, the
+// the single source of truth, docs/architecture.md, "Undo"), its UndoAdapter, the
 // `.hlodproj` path it was opened from or saved to, and the autosave (ProjectFile.h).
 //
 // Dirty: the document differs from the saved file: the undo stack is not at its clean index, or
@@ -19,7 +19,6 @@
 #include <QString>
 
 #include "pipeline/doc/Document.h"
-#include "pipeline/doc/HlodBuild.h"
 #include "widgets/doc/UndoAdapter.h"
 
 class QTimer;
@@ -46,8 +45,10 @@ public:
     // Whether closing should ask "save changes?" (the same as isDirty()).
     bool shouldPromptOnClose() const { return isDirty(); }
 
-    // A fresh untitled document over `sources` (empty = the sample scene).
-    void newDocument(std::vector<std::filesystem::path> sources);
+    // A fresh untitled document over `sources` (empty = the sample scene). It keeps the Cluster
+    // and Bake parameters of the branch of `keepFrom` (a Bake node of the current document; the
+    // defaults when kNoNode), not its hand edits (they name instances of the previous scene).
+    void newDocument(std::vector<std::filesystem::path> sources, NodeId keepFrom = kNoNode);
     // Saves to `path` (becomes the project path), marks clean, removes the autosave.
     void save(const QString& path);
     // Opens `path` (or its autosave when `fromAutosave`; the result is then dirty):
@@ -69,9 +70,6 @@ public:
     // from an edit of the open scene's project).
     bool replacing() const { return replacing_; }
 
-    // The build settings the document's Cluster and Bake parameters and hand edits give.
-    HlodSettings settings() const;
-
 Q_SIGNALS:
     void dirtyChanged(bool dirty);
     void projectChanged();  // new document, open, or a save under a new path
@@ -89,9 +87,5 @@ private:
     bool replacing_ = false;
     QTimer* timer_ = nullptr;
 };
-
-// The HlodSettings of a document: its first Cluster and Bake nodes' parameters (defaults for a
-// missing node) with the hand edits applied: locked groups, exclusions and split clusters.
-HlodSettings settingsOf(const Document& doc);
 
 } // namespace hlod::widgets

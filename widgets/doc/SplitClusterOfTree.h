@@ -1,7 +1,7 @@
 // The "split cluster" hand edit for the editor. The document's SplitCluster command reads the
-// children of the cluster from the tree the document's graph computed last
-// (Document::currentTree); the editor does not run that graph (its builds run in the background
-// through HlodBuilder), so this command is given the tree the user sees instead: the current
+// children of the cluster from the tree the Cluster node computed last (Document::currentTree);
+// the editor shows the tree of a Bake node instead (after the proxy economy, which dissolves
+// clusters whose proxy does not pay), so this command is given the tree the user sees: the shown
 // build's. Everything else is SplitCluster's: the same edit (splitCluster in ClusterEdits.h:
 // the cluster is dissolved, its children hang from its parent; a lock moves to its inner
 // children), the same text and JSON, undo restores the previous hand edits exactly.
@@ -19,7 +19,7 @@ namespace hlod::widgets {
 class SplitClusterOfTree : public InstanceSetEdit {
 public:
     SplitClusterOfTree(NodeId clusterNode, InstanceSet cluster, const ClusterTree& tree);
-    std::string text() const override { return "Split cluster"; }
+    std::string what() const override { return "Split cluster"; }
     void apply(Document& doc) override;
 
 protected:

@@ -1,5 +1,5 @@
-// Qt's undo machinery over the document's own history (DESIGN.md: "undo belongs to the
-// document"; widgets "wrap pipeline commands in QUndoCommands").
+// Qt's undo machinery over the document's own history (docs/architecture.md, "Undo": undo
+// belongs to the document; widgets wrap pipeline commands in QUndoCommands).
 //
 // The Document's UndoStack (pipeline/doc/UndoStack.h) is the authority; the QUndoStack mirrors
 // it one-to-one so the editor gets QUndoStack::createUndoAction/createRedoAction (Edit menu,

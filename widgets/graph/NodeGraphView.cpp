@@ -1,8 +1,12 @@
 // Node-graph view over the pipeline graph model (contract in NodeGraphView.h).
 #include "widgets/graph/NodeGraphView.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <QBrush>
 #include <QContextMenuEvent>
+#include <QFileInfo>
 #include <QGraphicsEllipseItem>
 #include <QGraphicsLineItem>
 #include <QGraphicsPathItem>
@@ -10,17 +14,23 @@
 #include <QGraphicsScene>
 #include <QGraphicsSimpleTextItem>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPainterPath>
 #include <QPainterPathStroker>
 #include <QPen>
+#include <QScrollBar>
+#include <QStyleOptionGraphicsItem>
+#include <QWheelEvent>
 
 namespace hlod::widgets {
 
 namespace {
 
-constexpr double kPortRadius = 6.0;
+constexpr double kPortRadius = 7.0;
+constexpr double kFirstPort = 15.0; // from the header to the first port's centre
+constexpr double kLineHeight = 17.0;
 constexpr int kNodeIdRole = 0; // QGraphicsItem::data key holding the node id
 
 QColor portColor(PortType t) {
@@ -35,9 +45,14 @@ QColor portColor(PortType t) {
     return Qt::gray;
 }
 
-double boxHeight(NodeKind kind) {
-    const auto ports = std::max(inputPorts(kind).size(), outputPorts(kind).size());
-    return NodeGraphView::kHeaderHeight + NodeGraphView::kPortSpacing * (double(ports) + 0.5);
+int portRows(NodeKind kind) {
+    return static_cast<int>(std::max(inputPorts(kind).size(), outputPorts(kind).size()));
+}
+
+// Where the two text lines (name, parameters) start below the ports.
+double bodyTop(NodeKind kind) {
+    return NodeGraphView::kHeaderHeight + kFirstPort +
+           NodeGraphView::kPortSpacing * (portRows(kind) - 1) + kPortRadius + 6.0;
 }
 
 QString kindName(NodeKind kind) {
@@ -70,14 +85,65 @@ QString statusName(NodeStatus s) {
     return {};
 }
 
+QString number(double v) { return QLocale().toString(v, 'g', 6); }
+
+// The parameters that tell one node of a kind from another, on one line.
+QString summary(const GraphNode& n) {
+    const ParamValues& p = n.params;
+    switch (n.kind) {
+    case NodeKind::Import: {
+        if (n.sources.empty()) return NodeGraphView::tr("sample scene");
+        const QString first = QFileInfo(QString::fromStdString(n.sources[0].string())).fileName();
+        return n.sources.size() == 1
+                   ? first
+                   : NodeGraphView::tr("%1 + %2 more").arg(first).arg(n.sources.size() - 1);
+    }
+    case NodeKind::Cluster: {
+        const QString volume = QString::fromStdString(paramText(p, "volume"));
+        const QString k = volume == QLatin1String("aabb")
+                              ? QStringLiteral(" k=%1").arg(number(paramNumber(p, "k")))
+                              : QString();
+        return NodeGraphView::tr("%1%2, ≤ %3 children")
+            .arg(volume, k)
+            .arg(paramInt(p, "max_children"));
+    }
+    case NodeKind::Bake:
+        return NodeGraphView::tr("S %1 px, %2")
+            .arg(number(paramNumber(p, "screen_size")),
+                 QString::fromStdString(paramText(p, "proxy")));
+    case NodeKind::Export: {
+        const QString out = QString::fromStdString(paramText(p, "output"));
+        return out.isEmpty() ? NodeGraphView::tr("no output folder")
+                             : NodeGraphView::tr("to %1").arg(QFileInfo(out).fileName());
+    }
+    }
+    return {};
+}
+
+// A node's box: the selection is shown by its outline (setStatusOnly), not by the style's dashed
+// frame, which would hide the outline of the shown node.
+class NodeBox : public QGraphicsRectItem {
+public:
+    using QGraphicsRectItem::QGraphicsRectItem;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option,
+               QWidget* widget) override {
+        QStyleOptionGraphicsItem plain(*option);
+        plain.state &= ~QStyle::State_Selected;
+        QGraphicsRectItem::paint(painter, &plain, widget);
+    }
+};
+
 } // namespace
 
 NodeGraphView::NodeGraphView(QWidget* parent) : QGraphicsView(parent) {
     setScene(new QGraphicsScene(this));
     setRenderHint(QPainter::Antialiasing);
+    setRenderHint(QPainter::TextAntialiasing);
     setDragMode(QGraphicsView::NoDrag);
     setBackgroundBrush(QColor(228, 230, 234));
-    setAlignment(Qt::AlignCenter);
+    setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    setFocusPolicy(Qt::StrongFocus);
 }
 
 QColor NodeGraphView::statusColor(NodeStatus status) {
@@ -94,27 +160,38 @@ QColor NodeGraphView::statusColor(NodeStatus status) {
     return Qt::gray;
 }
 
+QSizeF NodeGraphView::boxSize(NodeKind kind) {
+    return {kNodeWidth, bodyTop(kind) + 2.0 * kLineHeight + 6.0};
+}
+
 void NodeGraphView::setGraph(const PipelineGraph* graph) {
     graph_ = graph;
     refresh();
+    fitGraph();
 }
 
 QGraphicsRectItem* NodeGraphView::nodeItem(NodeId node) const {
-    auto it = boxes_.find(node);
-    return it == boxes_.end() ? nullptr : it->second;
+    auto it = items_.find(node);
+    return it == items_.end() ? nullptr : it->second.box;
+}
+
+QString NodeGraphView::titleOf(NodeId node) const {
+    return graph_ && graph_->hasNode(node) ? title(graph_->node(node)) : QString();
+}
+
+QString NodeGraphView::summaryOf(NodeId node) const {
+    return graph_ && graph_->hasNode(node) ? summary(graph_->node(node)) : QString();
 }
 
 QPointF NodeGraphView::portPosition(NodeId node, bool output, int port) const {
     const GraphNode& n = graph_->node(node);
-    const double y = n.y + kHeaderHeight + kPortSpacing * (port + 0.75);
+    const double y = n.y + kHeaderHeight + kFirstPort + kPortSpacing * port;
     return {output ? n.x + kNodeWidth : n.x, y};
 }
 
 void NodeGraphView::refresh() {
     scene()->clear();
-    boxes_.clear();
-    headers_.clear();
-    statusTexts_.clear();
+    items_.clear();
     curves_.clear();
     rubber_ = nullptr;
     movingNode_ = kNoNode;
@@ -124,42 +201,59 @@ void NodeGraphView::refresh() {
     for (const Connection& c : graph_->connections())
         addConnectionItem(c);
     if (selected_ != kNoNode && !graph_->hasNode(selected_)) selected_ = kNoNode;
-    if (selected_ != kNoNode) boxes_[selected_]->setSelected(true);
+    if (selected_ != kNoNode) items_[selected_].box->setSelected(true);
     setStatusOnly();
-    fitGraph();
+    updateSceneRect();
+}
+
+void NodeGraphView::updateSceneRect() {
+    // Room around the nodes to scroll and drop new ones; never smaller than the viewport, so the
+    // nodes stay where they are on screen when one is added.
+    QRectF rect = scene()->itemsBoundingRect().adjusted(-40, -40, 40, 40);
+    rect = rect.united(sceneRect());
+    setSceneRect(rect);
+}
+
+void NodeGraphView::setZoom(double scale) {
+    scale = std::clamp(scale, kMinScale, kMaxScale);
+    setTransform(QTransform::fromScale(scale, scale));
 }
 
 void NodeGraphView::fitGraph() {
-    if (boxes_.empty()) return;
-    const QRectF rect = scene()->itemsBoundingRect().adjusted(-24, -24, 24, 24);
+    if (items_.empty()) return;
+    const QRectF rect = scene()->itemsBoundingRect().adjusted(-12, -12, 12, 12);
     setSceneRect(rect);
-    resetTransform();
     const QSize room = viewport()->size();
-    if (rect.width() > room.width() || rect.height() > room.height())
-        fitInView(rect, Qt::KeepAspectRatio);
-}
-
-void NodeGraphView::resizeEvent(QResizeEvent* event) {
-    QGraphicsView::resizeEvent(event);
-    fitGraph();
+    const double fit = std::min(room.width() / rect.width(), room.height() / rect.height());
+    setZoom(std::min(1.0, fit));
+    centerOn(rect.center());
 }
 
 void NodeGraphView::selectNode(NodeId node) {
-    selected_ = boxes_.count(node) ? node : kNoNode;
+    selected_ = items_.count(node) ? node : kNoNode;
     scene()->clearSelection();
-    if (selected_ != kNoNode) boxes_[selected_]->setSelected(true);
+    if (selected_ != kNoNode) items_[selected_].box->setSelected(true);
+    setStatusOnly();
 }
 
-void NodeGraphView::setStatuses(std::map<NodeId, NodeStatus> statuses,
-                                std::map<NodeId, QString> messages) {
-    statuses_ = std::move(statuses);
-    messages_ = std::move(messages);
+void NodeGraphView::setShownNode(NodeId node) {
+    if (node == shown_) return;
+    shown_ = node;
     setStatusOnly();
 }
 
 NodeStatus NodeGraphView::shownStatus(NodeId node) const {
-    if (auto it = statuses_.find(node); it != statuses_.end()) return it->second;
     return graph_ && graph_->hasNode(node) ? graph_->status(node) : NodeStatus::Pending;
+}
+
+void NodeGraphView::setProgress(NodeId node, double fraction, const QString& text) {
+    progress_[node] = {fraction, text};
+    setStatusOnly();
+}
+
+void NodeGraphView::clearProgress() {
+    progress_.clear();
+    setStatusOnly();
 }
 
 Connection NodeGraphView::connectionAt(const QPointF& p) const {
@@ -171,91 +265,141 @@ Connection NodeGraphView::connectionAt(const QPointF& p) const {
 }
 
 void NodeGraphView::addNodeItem(const GraphNode& n) {
-    auto* box = scene()->addRect(0, 0, kNodeWidth, boxHeight(n.kind), QPen(QColor(60, 60, 60)),
-                                 QBrush(QColor(245, 245, 245)));
+    const QSizeF size = boxSize(n.kind);
+    auto* box = new NodeBox(0, 0, size.width(), size.height());
+    box->setPen(QPen(QColor(60, 60, 60)));
+    box->setBrush(QColor(248, 248, 248));
+    scene()->addItem(box);
     box->setPos(n.x, n.y);
     box->setData(kNodeIdRole, n.id);
     box->setFlag(QGraphicsItem::ItemIsSelectable);
     auto* header = new QGraphicsRectItem(0, 0, kNodeWidth, kHeaderHeight, box);
     header->setPen(Qt::NoPen);
+    auto* bar = new QGraphicsRectItem(0, kHeaderHeight - 4, 0, 4, header);
+    bar->setPen(Qt::NoPen);
+    bar->setBrush(QColor(255, 255, 255, 200));
     auto* text = new QGraphicsSimpleTextItem(title(n), header);
     text->setBrush(Qt::white);
-    QFont bold = text->font();
+    QFont bold = font();
     bold.setBold(true);
     text->setFont(bold);
     text->setPos(8, (kHeaderHeight - text->boundingRect().height()) / 2);
     auto* status = new QGraphicsSimpleTextItem(header);
-    status->setBrush(QColor(255, 255, 255, 230));
-    statusTexts_[n.id] = status;
+    status->setBrush(QColor(255, 255, 255, 235));
+    status->setFont(font());
     auto addPorts = [&](const std::vector<Port>& ports, bool output) {
         for (std::size_t i = 0; i < ports.size(); ++i) {
-            const double y = kHeaderHeight + kPortSpacing * (double(i) + 0.75);
+            const double y = kHeaderHeight + kFirstPort + kPortSpacing * double(i);
             const double x = output ? kNodeWidth : 0.0;
             auto* dot = new QGraphicsEllipseItem(x - kPortRadius, y - kPortRadius, 2 * kPortRadius,
                                                  2 * kPortRadius, box);
             dot->setBrush(portColor(ports[i].type));
+            dot->setPen(QPen(QColor(60, 60, 60)));
             dot->setToolTip(QString::fromStdString(ports[i].name));
             auto* label = new QGraphicsSimpleTextItem(QString::fromStdString(ports[i].name), box);
-            const double w = label->boundingRect().width();
-            label->setPos(output ? x - w - 10 : x + 10, y - 8);
+            label->setFont(font());
+            label->setBrush(QColor(70, 70, 70));
+            const QRectF r = label->boundingRect();
+            label->setPos(output ? x - r.width() - 12 : x + 12, y - r.height() / 2);
         }
     };
     addPorts(inputPorts(n.kind), false);
     addPorts(outputPorts(n.kind), true);
-    boxes_[n.id] = box;
-    headers_[n.id] = header;
+    // The name (bold) and the parameters that tell this node from another of its kind.
+    QStringList lines;
+    if (!n.name.empty()) lines << QString::fromStdString(n.name);
+    lines << summary(n);
+    double y = bodyTop(n.kind);
+    for (int i = 0; i < lines.size(); ++i) {
+        auto* line = new QGraphicsSimpleTextItem(lines[i], box);
+        QFont f = font();
+        f.setBold(i == 0 && !n.name.empty());
+        line->setFont(f);
+        line->setBrush(QColor(30, 30, 30));
+        const QFontMetricsF metrics(f);
+        line->setText(metrics.elidedText(lines[i], Qt::ElideRight, kNodeWidth - 16));
+        line->setPos(8, y);
+        y += kLineHeight;
+    }
+    items_[n.id] = {box, header, bar, status};
 }
 
 void NodeGraphView::addConnectionItem(const Connection& c) {
     const QPointF a = portPosition(c.from, true, c.fromPort);
     const QPointF b = portPosition(c.to, false, c.toPort);
     QPainterPath path(a);
-    const double dx = std::max(40.0, std::abs(b.x() - a.x()) / 2);
+    // Forward wires bend gently; a wire to a node on the left goes out and comes back in wide
+    // loops, so it never crosses its own boxes.
+    const double dx = b.x() >= a.x() ? std::max(40.0, (b.x() - a.x()) / 2) : 80.0;
     path.cubicTo(a + QPointF(dx, 0), b - QPointF(dx, 0), b);
     const PortType t = outputPorts(graph_->node(c.from).kind)[c.fromPort].type;
-    auto* item = scene()->addPath(path, QPen(portColor(t), 2.0));
+    auto* item = scene()->addPath(path, QPen(portColor(t), 2.5));
     item->setZValue(-1);
     curves_.emplace_back(c, item);
 }
 
 void NodeGraphView::setStatusOnly() {
     if (!graph_) return;
-    for (auto& [id, header] : headers_) {
+    const QColor highlight = palette().color(QPalette::Highlight);
+    for (auto& [id, it] : items_) {
         if (!graph_->hasNode(id)) continue;
         const NodeStatus s = shownStatus(id);
-        header->setBrush(statusColor(s));
-        QString tip = statusName(s);
-        if (auto it = messages_.find(id); it != messages_.end() && !it->second.isEmpty())
-            tip = it->second;
-        else if (s == NodeStatus::Failed && !statuses_.count(id))
-            tip = QString::fromStdString(graph_->error(id));
-        boxes_[id]->setToolTip(tip);
-        QGraphicsSimpleTextItem* text = statusTexts_[id];
-        text->setText(statusName(s));
-        text->setPos(kNodeWidth - text->boundingRect().width() - 8,
-                     (kHeaderHeight - text->boundingRect().height()) / 2);
+        it.header->setBrush(statusColor(s));
+        // The shown node in the highlight colour, the selected one in black, both thick.
+        it.box->setPen(id == shown_      ? QPen(highlight, 3.5)
+                       : id == selected_ ? QPen(QColor(20, 20, 20), 2.5)
+                                         : QPen(QColor(60, 60, 60), 1.0));
+        QString text = statusName(s);
+        QString tip = text;
+        double fraction = 0.0;
+        if (const auto p = progress_.find(id); p != progress_.end() && s == NodeStatus::Running) {
+            fraction = std::clamp(p->second.first, 0.0, 1.0);
+            if (p->second.first >= 0.0)
+                text = tr("running %1%").arg(static_cast<int>(std::floor(fraction * 100.0)));
+            if (!p->second.second.isEmpty()) tip = p->second.second;
+        }
+        if (s == NodeStatus::Failed) tip = QString::fromStdString(graph_->error(id));
+        if (s == NodeStatus::UpToDate && graph_->node(id).kind == NodeKind::Export) {
+            if (const NodeOutput* out = graph_->output(id); out && out->exported)
+                tip = tr("Package written to %1")
+                          .arg(QString::fromStdString(out->exported->output.string()));
+        }
+        if (id == shown_) tip += QLatin1Char('\n') + tr("Shown in the 3D view");
+        it.box->setToolTip(tip);
+        it.bar->setRect(0, kHeaderHeight - 4, kNodeWidth * fraction, 4);
+        it.status->setText(text);
+        it.status->setPos(kNodeWidth - it.status->boundingRect().width() - 8,
+                          (kHeaderHeight - it.status->boundingRect().height()) / 2);
     }
 }
 
 NodeGraphView::PortHit NodeGraphView::portAt(const QPointF& p) const {
     if (!graph_) return {};
-    const double r2 = (kPortRadius + 3) * (kPortRadius + 3);
+    // kPortHitPx screen pixels, whatever the zoom, and never less than the dot itself.
+    const double scale = std::max(1e-6, transform().m11());
+    const double r = std::max(kPortRadius + 3.0, kPortHitPx / scale);
+    PortHit best;
+    double bestD2 = r * r;
     for (NodeId id : graph_->nodeIds()) {
         const NodeKind kind = graph_->node(id).kind;
         for (bool output : {false, true}) {
             const auto n = (output ? outputPorts(kind) : inputPorts(kind)).size();
             for (std::size_t i = 0; i < n; ++i) {
                 const QPointF d = portPosition(id, output, static_cast<int>(i)) - p;
-                if (d.x() * d.x() + d.y() * d.y() <= r2) return {id, output, static_cast<int>(i)};
+                const double d2 = d.x() * d.x() + d.y() * d.y();
+                if (d2 <= bestD2) {
+                    bestD2 = d2;
+                    best = {id, output, static_cast<int>(i)};
+                }
             }
         }
     }
-    return {};
+    return best;
 }
 
 NodeId NodeGraphView::nodeAt(const QPointF& p) const {
-    for (const auto& [id, box] : boxes_) {
-        if (box->sceneBoundingRect().contains(p)) return id;
+    for (const auto& [id, it] : items_) {
+        if (it.box->sceneBoundingRect().contains(p)) return id;
     }
     return kNoNode;
 }
@@ -288,7 +432,7 @@ void NodeGraphView::mouseMoveEvent(QMouseEvent* event) {
     }
     if (movingNode_ != kNoNode) {
         const GraphNode& n = graph_->node(movingNode_);
-        boxes_[movingNode_]->setPos(QPointF(n.x, n.y) + (p - moveStart_));
+        items_[movingNode_].box->setPos(QPointF(n.x, n.y) + (p - moveStart_));
         return;
     }
     QGraphicsView::mouseMoveEvent(event);
@@ -309,7 +453,7 @@ void NodeGraphView::mouseReleaseEvent(QMouseEvent* event) {
         const NodeId id = movingNode_;
         movingNode_ = kNoNode;
         if (p != moveStart_) {
-            const QPointF pos = boxes_[id]->pos();
+            const QPointF pos = items_[id].box->pos();
             Q_EMIT nodeMoved(id, pos.x(), pos.y());
         }
         return;
@@ -317,15 +461,33 @@ void NodeGraphView::mouseReleaseEvent(QMouseEvent* event) {
     QGraphicsView::mouseReleaseEvent(event);
 }
 
+void NodeGraphView::fillNodeMenu(QMenu& menu, NodeId id) {
+    const QString name = title(graph_->node(id));
+    menu.addAction(tr("D&uplicate %1").arg(name), this,
+                   [this, id] { Q_EMIT duplicateRequested(id, false); });
+    QAction* branch = menu.addAction(tr("Duplicate &Branch"), this,
+                                     [this, id] { Q_EMIT duplicateRequested(id, true); });
+    branch->setToolTip(tr("Copy this node and everything downstream of it: a second variant fed "
+                          "by the same input"));
+    QAction* disconnect =
+        menu.addAction(tr("&Disconnect"), this, [this, id] { Q_EMIT disconnectNodeRequested(id); });
+    disconnect->setEnabled(!graph_->connectionsOf(id).empty());
+    menu.addAction(tr("&Rename…"), this, [this, id] { Q_EMIT renameRequested(id); });
+    menu.addSeparator();
+    QAction* remove = menu.addAction(tr("&Remove %1").arg(name), this,
+                                     [this, id] { Q_EMIT removeRequested(id); });
+    remove->setShortcut(QKeySequence::Delete);
+}
+
 void NodeGraphView::contextMenuEvent(QContextMenuEvent* event) {
     if (!graph_) return;
     const QPointF p = mapToScene(event->pos());
     QMenu menu(this);
+    menu.setObjectName(QStringLiteral("NodeGraphMenu"));
     if (const NodeId id = nodeAt(p); id != kNoNode) {
         selectNode(id);
         Q_EMIT nodeSelected(id);
-        menu.addAction(tr("&Remove %1").arg(title(graph_->node(id))), this,
-                       [this, id] { Q_EMIT removeRequested(id); });
+        fillNodeMenu(menu, id);
     } else if (const Connection c = connectionAt(p); c.from != kNoNode) {
         menu.addAction(tr("&Disconnect"), this, [this, c] { Q_EMIT disconnectRequested(c); });
     } else {
@@ -334,8 +496,25 @@ void NodeGraphView::contextMenuEvent(QContextMenuEvent* event) {
             menu.addAction(tr("Add %1 Node").arg(kindName(kind)), this, [this, kind, p] {
                 Q_EMIT addRequested(static_cast<int>(kind), p.x(), p.y());
             });
+        menu.addSeparator();
+        menu.addAction(tr("&Fit View"), this, &NodeGraphView::fitGraph)
+            ->setShortcut(QKeySequence(Qt::Key_F));
     }
     menu.exec(event->globalPos());
+}
+
+bool NodeGraphView::event(QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const bool own = key->modifiers() == Qt::NoModifier &&
+                         (key->key() == Qt::Key_F || key->key() == Qt::Key_Delete ||
+                          key->key() == Qt::Key_Backspace);
+        if (own) {
+            event->accept();
+            return true;
+        }
+    }
+    return QGraphicsView::event(event);
 }
 
 void NodeGraphView::keyPressEvent(QKeyEvent* event) {
@@ -345,7 +524,20 @@ void NodeGraphView::keyPressEvent(QKeyEvent* event) {
             return;
         }
     }
+    if (event->key() == Qt::Key_F && event->modifiers() == Qt::NoModifier) {
+        fitGraph();
+        return;
+    }
     QGraphicsView::keyPressEvent(event);
+}
+
+void NodeGraphView::wheelEvent(QWheelEvent* event) {
+    if (event->modifiers() & Qt::ControlModifier) {
+        const double steps = event->angleDelta().y() / 120.0;
+        setZoom(transform().m11() * std::pow(1.15, steps));
+        return;
+    }
+    QGraphicsView::wheelEvent(event);
 }
 
 } // namespace hlod::widgets

@@ -1,35 +1,29 @@
-// The "Pipeline" dock of the editor (issue #7): the node graph of the open document
-// (NodeGraphView over Document::graph()) with a line of help and an "Add Node" button.
+// The "Pipeline" dock of the editor (issue #7, issue 29): the node graph of the open document
+// (NodeGraphView over Document::graph()) with an "Add Node" button, "Fit" (key F in the view)
+// and a line of help.
 //
 // Edits: every gesture of the view becomes a document command through the UndoAdapter, so it
-// is undoable: add (AddNode, from the button or the background's context menu), remove
-// (RemoveNode: Delete or the node's context menu; the last node of a kind stays, since the
-// editor builds and exports with the first node of each kind), connect (ConnectNodes: drag from an
-// output port to an input port), disconnect (DisconnectNodes: a connection's context menu), move
-// (MoveNode: drag a box). Refused edits (a cycle, a port type mismatch, an input already
-// connected) are reported by the UndoAdapter's commandFailed. The view is redrawn after every
-// document change.
+// is undoable and saved with the project: add (AddNode: from the button, placed to the right of
+// the selected node and connected to it when it can take its output, else on a free spot; from
+// the background's context menu at the click, moved to a free spot), remove (RemoveNode: Delete
+// or the node's context menu), connect (ConnectNodes: drag from an output port to an input
+// port), disconnect (DisconnectNodes: a connection's context menu; DisconnectNode: a node's),
+// duplicate (DuplicateNodes: the node alone, or "Duplicate Branch": the node and everything
+// downstream, placed below the originals where no node is), rename (RenameNode, asked in a
+// dialog), move (MoveNode: drag a box). Refused edits (a cycle, a port type mismatch, an input
+// already connected) are reported by the UndoAdapter's commandFailed. The view is redrawn after
+// every document change; it is fitted only when a document is opened or on request.
 // Selection: clicking a node emits nodeSelected(id) (the main window shows that node's
-// parameters in the Parameters dock).
-// Status colours: the editor does not run the document's graph, it builds in the background
-// (StudioModel / HlodBuilder) with the first Import, Cluster and Bake nodes (Document's
-// shortcuts). Their statuses are that build's: Import is up to date once the scene is open;
-// during a build the stage that runs is "running" ("cluster", then "bake"), a failed stage
-// "failed" (tooltip: the message) until the settings change; otherwise Cluster and Bake are up to
-// date when the document's settings (HlodSettings: sameClustering, sameBaking) are the ones of
-// the build shown, else pending. A bake parameter change leaves Cluster up to date: only the
-// bake reruns. Export runs on File ▸ Export Package (issue 20 #3): running while the package is
-// written, up to date once the package of exactly the shown build is written (tooltip: the
-// folder), failed with the message, pending again when the build changes. Other nodes are not
-// built by the editor: they show the graph's own run state (pending).
+// parameters in the Parameters dock); clicking a Bake node also makes it the shown one
+// (StudioModel::setShownBake), which the view outlines.
+// Statuses: the graph's, as the editor's runs bring them in node by node (GraphRunner), with
+// the running step's progress in its header; nothing here derives a status.
 #pragma once
 
-#include <optional>
-
+#include <QPointF>
 #include <QString>
 #include <QWidget>
 
-#include "pipeline/doc/HlodBuild.h"
 #include "pipeline/graph/PipelineGraph.h"
 
 class QToolButton;
@@ -47,32 +41,41 @@ public:
 
     NodeGraphView* view() const { return view_; }
     QToolButton* addButton() const { return add_; }
-    // Recomputes the status colours (also done on every build and document change).
-    void updateStatuses();
+    QToolButton* fitButton() const { return fit_; }
 
-    // The requests of the view, as commands (public for tests and menus).
+    // The requests of the view, as commands (public for tests and menus). addNode places the
+    // node on a free spot near (x, y); addAfter adds a node of `kind` to the right of `input`,
+    // connected to it.
     bool addNode(NodeKind kind, double x, double y);
+    bool addAfter(NodeKind kind, NodeId input);
     bool removeNode(NodeId node);
     bool connectNodes(const Connection& c);
     bool disconnectNodes(const Connection& c);
+    bool disconnectNode(NodeId node);
+    bool duplicate(NodeId node, bool branch);
+    bool renameNode(NodeId node, const QString& name);
     bool moveNode(NodeId node, double x, double y);
+    // Asks for a node's name in a dialog, then renames it.
+    void askRename(NodeId node);
+
+    // The top-left corner nearest to `wanted` (searching down, then right) where a box of
+    // `kind` overlaps no node of the graph.
+    QPointF freeSpot(NodeKind kind, QPointF wanted) const;
 
 Q_SIGNALS:
     void nodeSelected(quint32 node);
 
 private:
     void onDocumentChanged();
-    // A free spot for a node added from the button: below the lowest node.
-    QPointF freeSpot() const;
+    void onNodeSelected(quint32 node);
+    // Adds the kind chosen in the Add Node menu: after the selected node when it fits.
+    void addFromButton(NodeKind kind);
 
     ProjectSession* session_;
     StudioModel* model_;
     NodeGraphView* view_ = nullptr;
     QToolButton* add_ = nullptr;
-    QString stage_;       // stage of the running build ("cluster", "bake"); empty when idle
-    QString failedStage_; // stage of the last failed build; empty when none
-    QString failedMessage_;
-    std::optional<HlodSettings> failedSettings_; // what the failed build was given
+    QToolButton* fit_ = nullptr;
 };
 
 } // namespace hlod::widgets

@@ -3,6 +3,7 @@
 
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
@@ -15,61 +16,45 @@ namespace hlod::widgets {
 
 namespace {
 
-QGroupBox* group(const QString& title, QWidget* content) {
-    auto* box = new QGroupBox(title);
-    auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->addWidget(content);
-    return box;
-}
-
-QString nodeTitle(const PipelineGraph& g, NodeId id) {
-    if (id == kNoNode || !g.hasNode(id)) return {};
-    QString kind;
-    switch (g.node(id).kind) {
+QString kindTitle(NodeKind kind) {
+    switch (kind) {
     case NodeKind::Import:
-        kind = BuildParameters::tr("Import");
-        break;
+        return BuildParameters::tr("Import (reading the scene)");
     case NodeKind::Cluster:
-        kind = BuildParameters::tr("Cluster");
-        break;
+        return BuildParameters::tr("Clustering");
     case NodeKind::Bake:
-        kind = BuildParameters::tr("Bake");
-        break;
+        return BuildParameters::tr("Proxies");
     case NodeKind::Export:
-        kind = BuildParameters::tr("Export");
-        break;
+        return BuildParameters::tr("Package");
     }
-    return QStringLiteral("%1 #%2").arg(kind).arg(id);
+    return {};
 }
 
 } // namespace
 
 BuildParameters::BuildParameters(UndoAdapter& undo, StudioModel* model, QWidget* parent)
     : QWidget(parent), undo_(undo), model_(model) {
-    cluster_ = new ParameterPanel(undo);
-    cluster_->setObjectName(QStringLiteral("ClusterParameters"));
-    bake_ = new ParameterPanel(undo);
-    bake_->setObjectName(QStringLiteral("BakeParameters"));
-    other_ = new ParameterPanel(undo);
-    other_->setObjectName(QStringLiteral("SelectedNodeParameters"));
+    panel_ = new ParameterPanel(undo);
+    panel_->setObjectName(QStringLiteral("SelectedNodeParameters"));
+    box_ = new QGroupBox;
+    auto* boxLayout = new QVBoxLayout(box_);
+    boxLayout->setContentsMargins(4, 4, 4, 4);
+    boxLayout->addWidget(panel_);
+    hint_ = new QLabel(tr("Click a node in the Pipeline dock to see and edit its parameters."));
+    hint_->setWordWrap(true);
     auto* content = new QWidget;
     auto* column = new QVBoxLayout(content);
-    otherBox_ = group({}, other_);
-    clusterBox_ = group(tr("Clustering"), cluster_);
-    bakeBox_ = group(tr("Proxies"), bake_);
-    column->addWidget(otherBox_);
-    column->addWidget(clusterBox_);
-    column->addWidget(bakeBox_);
+    column->addWidget(hint_);
+    column->addWidget(box_);
     column->addStretch(1);
-    otherBox_->hide();
     scroll_ = new QScrollArea;
     scroll_->setWidgetResizable(true);
     scroll_->setFrameShape(QFrame::NoFrame);
     scroll_->setWidget(content);
 
     build_ = new QPushButton(tr("Build HLOD"));
-    build_->setToolTip(tr("Cluster the scene and bake the proxies with these parameters"));
+    build_->setToolTip(tr("Run the shown branch (its Cluster and Bake nodes) with these "
+                          "parameters"));
     cancel_ = new QPushButton(tr("Cancel"));
     connect(build_, &QPushButton::clicked, model_, &StudioModel::build);
     connect(cancel_, &QPushButton::clicked, model_, &StudioModel::cancelBuild);
@@ -83,68 +68,43 @@ BuildParameters::BuildParameters(UndoAdapter& undo, StudioModel* model, QWidget*
     layout->addWidget(scroll_, 1);
     layout->addLayout(buttons);
 
-    for (auto signal : {&StudioModel::sceneChanged, &StudioModel::buildStarted,
-                        &StudioModel::buildFinished, &StudioModel::buildCancelled})
+    for (auto signal :
+         {&StudioModel::sceneChanged, &StudioModel::buildStarted, &StudioModel::runFinished,
+          &StudioModel::buildCancelled, &StudioModel::shownBakeChanged})
         connect(model_, signal, this, &BuildParameters::updateButtons);
     connect(model_, &StudioModel::buildFailed, this, &BuildParameters::updateButtons);
     connect(&undo_, &UndoAdapter::documentChanged, this, &BuildParameters::followDocument);
+    showNode(kNoNode);
     updateButtons();
-}
-
-void BuildParameters::setNodes(NodeId clusterNode, NodeId bakeNode) {
-    cluster_->setNode(clusterNode);
-    bake_->setNode(bakeNode);
-    updateGroups();
 }
 
 void BuildParameters::showNode(NodeId node) {
     const PipelineGraph& g = undo_.document().graph();
     shown_ = g.hasNode(node) ? node : kNoNode;
-    const bool other = shown_ != kNoNode && shown_ != cluster_->node() && shown_ != bake_->node();
-    if (other_->node() != (other ? shown_ : kNoNode)) other_->setNode(other ? shown_ : kNoNode);
-    updateGroups();
-    if (QWidget* box = selectedPanel() ? selectedPanel()->parentWidget() : nullptr)
-        scroll_->ensureWidgetVisible(box, 0, 0);
-}
-
-ParameterPanel* BuildParameters::selectedPanel() const {
-    if (shown_ == kNoNode) return nullptr;
-    if (shown_ == cluster_->node()) return cluster_;
-    if (shown_ == bake_->node()) return bake_;
-    return other_;
+    if (panel_->node() != shown_) panel_->setNode(shown_);
+    box_->setVisible(shown_ != kNoNode);
+    hint_->setVisible(shown_ == kNoNode);
+    updateTitle();
 }
 
 void BuildParameters::followDocument() {
-    const Document& doc = undo_.document();
-    if (cluster_->node() != doc.clusterNode()) cluster_->setNode(doc.clusterNode());
-    if (bake_->node() != doc.bakeNode()) bake_->setNode(doc.bakeNode());
-    showNode(shown_); // the selected node may be gone, or now be the Cluster or Bake node
+    const PipelineGraph& g = undo_.document().graph();
+    if (shown_ != kNoNode && !g.hasNode(shown_)) showNode(kNoNode);
+    updateTitle(); // a rename
+    updateButtons();
 }
 
-void BuildParameters::updateGroups() {
+void BuildParameters::updateTitle() {
     const PipelineGraph& g = undo_.document().graph();
-    const ParameterPanel* selected = selectedPanel();
-    // The selected node's group title is drawn in the highlight colour.
-    const QString marked = QStringLiteral("QGroupBox::title { color: palette(highlight); }");
-    auto mark = [](QGroupBox* box, const QString& sheet) {
-        if (box->styleSheet() != sheet) box->setStyleSheet(sheet); // restyling is not free
-    };
-    auto title = [&](QGroupBox* box, const QString& what, ParameterPanel* panel) {
-        const QString node = nodeTitle(g, panel->node());
-        box->setTitle(node.isEmpty() ? what : tr("%1 (%2)").arg(what, node));
-        mark(box, panel == selected ? marked : QString());
-    };
-    title(clusterBox_, tr("Clustering"), cluster_);
-    title(bakeBox_, tr("Proxies"), bake_);
-    otherBox_->setVisible(selected == other_);
-    if (selected == other_) {
-        otherBox_->setTitle(nodeTitle(g, shown_));
-        mark(otherBox_, marked);
-    }
+    if (shown_ == kNoNode || !g.hasNode(shown_)) return;
+    const GraphNode& n = g.node(shown_);
+    box_->setTitle(tr("%1 — %2").arg(QString::fromStdString(describeNode(n)), kindTitle(n.kind)));
 }
 
 void BuildParameters::updateButtons() {
-    build_->setEnabled(model_->scene() != nullptr && !model_->building());
+    const bool canBuild =
+        model_->scene() != nullptr && !model_->building() && model_->shownBake() != kNoNode;
+    build_->setEnabled(canBuild);
     cancel_->setEnabled(model_->building());
 }
 

@@ -1,13 +1,11 @@
-// The "Parameters" dock of the editor: the parameter panels (ParameterPanel) of the document's
-// Cluster and Bake nodes (the ones the editor's builds use), one above the other, with Build and
-// Cancel buttons; above them, the panel of the node selected in the node graph (showNode) when
-// that is another node (Import, Export, or a node the user added). Selecting the Cluster or Bake
-// node marks and reveals its own group instead. Every edit is a SetParameter command on the
-// document (undoable), and StudioModel takes its build settings from the document, so nothing
-// here holds parameters.
-// The panels follow the document: after a change that removes or adds the first Cluster or Bake
-// node, or removes the selected node, they show what the document has then. Call setNodes()
-// after the document was replaced (a project opened): node ids may differ.
+// The "Parameters" dock of the editor: the parameter panel (ParameterPanel) of the node selected
+// in the node graph, and only that node's (issue 29: two Cluster nodes never show two "Volume"
+// fields at once), under a title naming it ("Cluster #5 'spheres'"), with Build and Cancel
+// buttons for the shown branch. Without a selection it says how to get one. Every edit is a
+// SetParameter command on the document (undoable), and runs take their parameters from the
+// document's graph, so nothing here holds parameters.
+// The panel follows the document: when the selected node is removed (or the document replaced),
+// it shows nothing.
 #pragma once
 
 #include <QWidget>
@@ -15,6 +13,7 @@
 #include "pipeline/graph/PipelineGraph.h"
 
 class QGroupBox;
+class QLabel;
 class QPushButton;
 class QScrollArea;
 
@@ -29,32 +28,26 @@ class BuildParameters : public QWidget {
 public:
     BuildParameters(UndoAdapter& undo, StudioModel* model, QWidget* parent = nullptr);
 
-    void setNodes(NodeId clusterNode, NodeId bakeNode);
     // Shows the parameters of `node` (the node graph's selection; kNoNode: none).
     void showNode(NodeId node);
     NodeId shownNode() const { return shown_; }
-    // The panel that shows `shownNode()` (nullptr when none is selected).
-    ParameterPanel* selectedPanel() const;
-
-    ParameterPanel* clusterPanel() const { return cluster_; }
-    ParameterPanel* bakePanel() const { return bake_; }
-    ParameterPanel* otherPanel() const { return other_; }
+    // The panel, showing shownNode()'s parameters (it is empty when none is selected).
+    ParameterPanel* panel() const { return panel_; }
+    QGroupBox* group() const { return box_; }
+    QLabel* hint() const { return hint_; }
     QPushButton* buildButton() const { return build_; }
     QPushButton* cancelButton() const { return cancel_; }
 
 private:
     void updateButtons();
     void followDocument();
-    void updateGroups();
+    void updateTitle();
 
     UndoAdapter& undo_;
     StudioModel* model_;
-    ParameterPanel* cluster_ = nullptr;
-    ParameterPanel* bake_ = nullptr;
-    ParameterPanel* other_ = nullptr;
-    QGroupBox* clusterBox_ = nullptr;
-    QGroupBox* bakeBox_ = nullptr;
-    QGroupBox* otherBox_ = nullptr;
+    ParameterPanel* panel_ = nullptr;
+    QGroupBox* box_ = nullptr;
+    QLabel* hint_ = nullptr;
     QScrollArea* scroll_ = nullptr;
     QPushButton* build_ = nullptr;
     QPushButton* cancel_ = nullptr;

@@ -1,7 +1,8 @@
 // The parameter panel of the selected pipeline node, generated from the parameter declarations
-// (pipeline/graph/Parameters.h; DESIGN.md: "the GUI panel, the CLI flags and the project file
-// are all driven by that declaration"): one editor per parameter of the node's kind, in
-// declaration order, labelled with ParamDecl::label, the unit as suffix and the tooltip.
+// (pipeline/graph/Parameters.h; docs/architecture.md, "The path of a parameter": the GUI panel,
+// the CLI flags and the project file are all driven by that declaration): one editor per parameter
+// of the node's kind, in declaration order, labelled with ParamDecl::label, the unit as suffix and
+// the tooltip.
 //   Enum -> QComboBox, Double -> QDoubleSpinBox (+ QSlider when ParamDecl::slider),
 //   Int -> QSpinBox, Bool -> QCheckBox, Path/Text -> QLineEdit (committed on Return/focus out).
 // The panel holds no pipeline state: it shows the values of the document's graph and turns

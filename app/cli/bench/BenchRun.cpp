@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <deque>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <memory>
@@ -18,7 +19,6 @@
 #include "../ProgressBar.h"
 #include "FrameMetrics.h"
 #include "pipeline/core/Error.h"
-#include "pipeline/doc/HlodBuild.h"
 #include "pipeline/eval/BenchReport.h"
 #include "pipeline/eval/Flip.h"
 #include "pipeline/eval/ImageError.h"
@@ -43,7 +43,7 @@ struct Config {
     Kind kind = Kind::Original;
     int layer = -1;
     // HLOD
-    std::unique_ptr<HlodBuild> build;
+    std::shared_ptr<const NodeOutput> build; // the Bake node's output: tree and proxies
     std::unique_ptr<SelectionTree> selection;
     std::unique_ptr<FrontCache> cache;
     std::vector<int> nodeDrawable; // per tree node, -1 when it draws nothing
@@ -65,17 +65,18 @@ double msSince(Clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-ClusterParams clusterParamsFor(const std::string& key) {
-    ClusterParams p;
-    if (key == "sphere") {
-        p.volume = VolumeType::Sphere;
-    } else if (key == "octree") {
-        p.volume = VolumeType::Octree;
+// A configuration's Cluster node: the bench's cluster parameters with its volume and k.
+NodeId addClusterNode(PipelineGraph& graph, const std::string& key, const ParamValues& values) {
+    const NodeId id = graph.addNode(NodeKind::Cluster);
+    for (const auto& [k, v] : values)
+        graph.setParam(id, k, v);
+    if (key == "sphere" || key == "octree") {
+        graph.setParam(id, "volume", key);
     } else {
-        p.volume = VolumeType::Aabb;
-        p.k = static_cast<double>(key.back() - '0');
+        graph.setParam(id, "volume", std::string("aabb"));
+        graph.setParam(id, "k", static_cast<double>(key.back() - '0'));
     }
-    return p;
+    return id;
 }
 
 std::string formatCount(double v) {
@@ -115,7 +116,7 @@ MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh&
 void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& renderer,
                          const std::vector<glm::vec4>& instColor,
                          const std::vector<SurfaceLook>& instLook) {
-    c.layout = std::make_unique<PackageLayout>(planPackage(scene, c.build->tree, c.build->bake));
+    c.layout = std::make_unique<PackageLayout>(planPackage(scene, *c.build->tree, *c.build->bake));
     c.contentDraws.resize(c.layout->contents.size());
     for (std::size_t k = 0; k < c.layout->contents.size(); ++k) {
         const ContentPlan& plan = c.layout->contents[k];
@@ -123,7 +124,7 @@ void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& rende
         if (plan.proxy) {
             if (c.nodeDrawable[plan.node] >= 0) {
                 draw.drawables.push_back(c.nodeDrawable[plan.node]);
-                draw.triangles = c.build->bake.nodes[plan.node].proxy.triangleCount();
+                draw.triangles = c.build->bake->nodes[plan.node].proxy.triangleCount();
             }
             continue;
         }
@@ -213,8 +214,10 @@ void writeFrameCamera(const std::filesystem::path& dir, int frame, const Camera&
 
 } // namespace
 
-void runBench(const Scene& scene, const BenchOptions& o) {
+void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& o) {
     namespace fs = std::filesystem;
+    const Scene& scene = *graph.output(importNode)->scene;
+    const BakeParams bake = bakeParamsFrom(o.bake);
     if (scene.instances.empty()) throw Error(ErrorCode::NoGeometry, "the scene has no meshes");
     std::error_code ec;
     fs::create_directories(o.out, ec);
@@ -240,7 +243,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     const double fps = o.frames / path.duration();
     const std::vector<Camera> cameras = sampleCameraPath(path, o.frames, fps, o.width, o.height);
     const double referenceHeight = 1080.0;
-    const double selectionS = o.screenSize * o.height / referenceHeight;
+    const double selectionS = bake.screen.screenSize * o.height / referenceHeight;
     // A DLOD level is shown where its measured deviation covers at most the pixel error of the
     // reference viewport (as proxies are at their switch): dev * ppu / d <= height / 1080.
     const double dlodPixelError = o.height / referenceHeight;
@@ -262,22 +265,27 @@ void runBench(const Scene& scene, const BenchOptions& o) {
         configs.push_back(std::move(c));
     }
 
+    // Every HLOD configuration is a branch of the graph: Cluster -> Bake from the one import.
     ProgressBar bar;
     std::vector<GeometryStats> stats{originalStats(scene)};
-    BakeParams bake;
-    bake.screen.screenSize = o.screenSize;
-    bake.proxyRatio = o.proxyRatio;
-    bake.threads = o.threads;
-    bake.cacheDir = o.cacheDir;
-    bake.atlas.enabled = o.proxyTextures;
-    for (Config& c : configs) {
-        if (c.kind != Kind::Hlod) continue;
-        HlodSettings settings;
-        settings.cluster = clusterParamsFor(c.key);
-        settings.cluster.levelGrowth = o.levelGrowth;
-        settings.bake = bake;
-        c.build = std::make_unique<HlodBuild>(buildHlod(scene, settings, bar.progress()));
-        c.name = hlodVersionName(c.build->tree);
+    std::vector<NodeId> bakes(configs.size(), kNoNode);
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        if (configs[i].kind != Kind::Hlod) continue;
+        const NodeId cluster = addClusterNode(graph, configs[i].key, o.cluster);
+        bakes[i] = graph.addNode(NodeKind::Bake);
+        for (const auto& [k, v] : o.bake)
+            graph.setParam(bakes[i], k, v);
+        graph.connect({importNode, 0, cluster, 0});
+        graph.connect({cluster, 0, bakes[i], 0});
+    }
+    std::vector<NodeId> targets;
+    std::copy_if(bakes.begin(), bakes.end(), std::back_inserter(targets),
+                 [](NodeId id) { return id != kNoNode; });
+    graph.run(targets, bar.progress());
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        if (bakes[i] == kNoNode) continue;
+        configs[i].build = graph.sharedOutput(bakes[i]);
+        configs[i].name = hlodVersionName(*configs[i].build->tree);
     }
     bar.finish();
 
@@ -287,7 +295,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     if (want("dlod")) {
         chains.resize(scene.meshes.size());
         deviations.resize(scene.meshes.size());
-        tbb::task_arena arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic);
+        tbb::task_arena arena(bake.threads > 0 ? bake.threads : tbb::task_arena::automatic);
         std::fprintf(stderr, "dlod: building chains for %zu meshes\n", scene.meshes.size());
         arena.execute([&] {
             tbb::parallel_for(std::size_t(0), scene.meshes.size(), [&](std::size_t m) {
@@ -313,7 +321,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     }
     for (const Config& c : configs)
         if (c.kind == Kind::Hlod)
-            stats.push_back(hlodStats(scene, c.build->tree, c.build->bake, c.name));
+            stats.push_back(hlodStats(scene, *c.build->tree, *c.build->bake, c.name));
 
     // Per-instance data shared by Original and DLOD.
     const std::size_t nInst = scene.instances.size();
@@ -346,7 +354,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     for (Config& c : configs) {
         c.layer = renderer.addLayer();
         if (c.kind == Kind::Hlod) {
-            const ClusterTree& tree = c.build->tree;
+            const ClusterTree& tree = *c.build->tree;
             std::vector<std::uint64_t> tris(tree.nodes.size(), 0);
             c.nodeDrawable.assign(tree.nodes.size(), -1);
             for (Id n = 0; n < tree.nodes.size(); ++n) {
@@ -359,13 +367,13 @@ void runBench(const Scene& scene, const BenchOptions& o) {
                         c.nodeDrawable[n] = renderer.addMesh(
                             c.layer, mesh, scene.instanceTransform(i), instColor[i], instLook[i]);
                 } else {
-                    const ProxyMesh& proxy = c.build->bake.nodes[n].proxy;
+                    const ProxyMesh& proxy = c.build->bake->nodes[n].proxy;
                     tris[n] = proxy.triangleCount();
                     if (tris[n] > 0) c.nodeDrawable[n] = renderer.addProxy(c.layer, proxy);
                 }
             }
             c.selection = std::make_unique<SelectionTree>(tree, std::move(tris),
-                                                          rootHasNoProxy(tree, c.build->bake));
+                                                          rootHasNoProxy(tree, *c.build->bake));
             c.cache = std::make_unique<FrontCache>(*c.selection);
             if (o.draw == HlodDraw::Package)
                 addPackageDrawables(c, scene, renderer, instColor, instLook);
@@ -510,7 +518,7 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     const std::vector<ConfigSummary> summaries = summarizeFrames(records);
     writeTextFileAtomic(o.out / "frames.csv", framesCsv(records));
     std::string title = "hlod bench:";
-    for (const std::string& in : o.inputs)
+    for (const std::string& in : graph.output(importNode)->inputs)
         title += " " + in;
     writeTextFileAtomic(o.out / "tables.md", tablesMarkdown(title, stats, summaries));
 
@@ -555,16 +563,16 @@ void runBench(const Scene& scene, const BenchOptions& o) {
     }
 
     nlohmann::json extra;
-    extra["inputs"] = o.inputs;
+    extra["inputs"] = graph.output(importNode)->inputs;
     extra["frames"] = o.frames;
     extra["fps"] = fps;
     extra["size"] = {o.width, o.height};
-    extra["screen_size_px"] = o.screenSize;
+    extra["screen_size_px"] = bake.screen.screenSize;
     extra["selection_screen_size_px"] = selectionS;
     extra["shading"] = o.shading == Shading::Geometry ? "geometry"
                        : o.shading == Shading::Colour ? "colour"
                                                       : "textured";
-    extra["proxy_textures"] = o.proxyTextures;
+    extra["proxy_textures"] = bake.atlas.enabled;
     extra["hlod_draw"] = o.draw == HlodDraw::Package ? "package" : "nodes";
     extra["psnr_cap_db"] = kPsnrCapDb;
     extra["flip_pixels_per_degree"] = metrics.pixelsPerDegree();

@@ -40,9 +40,7 @@
 #include <vector>
 
 #include "OffscreenRenderer.h"
-#include "pipeline/cluster/Cluster.h"
-#include "pipeline/proxy/ProxyBaker.h"
-#include "pipeline/scene/Scene.h"
+#include "pipeline/graph/PipelineGraph.h"
 
 namespace hlod::cli {
 
@@ -50,19 +48,17 @@ enum class HlodDraw { Package, Nodes };
 
 struct BenchOptions {
     std::filesystem::path out;
-    std::vector<std::string> inputs; // for the summary
     int frames = 300;
     int width = 640;
     int height = 360;
     std::vector<std::string> configs; // keys: original dlod sphere aabb0 aabb1 aabb2 octree
-    double screenSize = 300.0;        // bake S at the 1080 px reference viewport
-    double proxyRatio = BakeParams{}.proxyRatio; // rho of the proxy economy (ProxyBaker.h)
-    double levelGrowth = kDefaultLevelGrowth;    // LevelGrowth.h
+    // The Cluster and Bake parameters of every HLOD configuration (their declarations' defaults
+    // and the flags given; each configuration sets its own volume and k). The bake's S is meant
+    // for the 1080 px reference viewport.
+    ParamValues cluster = defaultValues(NodeKind::Cluster);
+    ParamValues bake = defaultValues(NodeKind::Bake);
     std::optional<std::filesystem::path> pathFile;
-    int threads = 0;
     Shading shading = Shading::Geometry;
-    std::filesystem::path cacheDir; // proxy cache, empty = none
-    bool proxyTextures = true;      // bake base-colour atlases (drawn in Textured shading)
     HlodDraw draw = HlodDraw::Package;
     // Also write frames/NNNNN-KEY.png for every frame and configuration, and each frame's
     // camera as frames/NNNNN-camera.json ({eye, target, up, fovDeg, near, far, width, height}).
@@ -72,7 +68,9 @@ struct BenchOptions {
 inline const std::vector<std::string> kBenchConfigs{"original", "dlod",  "sphere", "aabb0",
                                                     "aabb1",    "aabb2", "octree"};
 
-// Throws hlod::Error; writes summary.json last (and removes an old one first).
-void runBench(const Scene& scene, const BenchOptions& options);
+// Benchmarks the scene `importNode` of `graph` produced (it must have run): every HLOD
+// configuration is a Cluster -> Bake branch added to `graph` and run by it. Throws hlod::Error;
+// writes summary.json last (and removes an old one first).
+void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& options);
 
 } // namespace hlod::cli

@@ -1,4 +1,4 @@
-// A baked base-colour atlas for one proxy (issue 19, DESIGN.md "Materials"): the proxy's own
+// A baked base-colour atlas for one proxy (issue 19, docs/architecture.md): the proxy's own
 // triangles get UV charts (Charts.h) packed into one image (PackCharts.h) at about one texel
 // per screen pixel at the node's switch distance, every texel filled from the original
 // surfaces the proxy stands for (SampleTexels.h), the rest dilated (DilateAtlas.h) and the

@@ -67,8 +67,8 @@ protected:
         ASSERT_TRUE(waitUntil([this] { return window->model()->scene() != nullptr; }));
         // No disk cache, two threads, the thesis' merges, every proxy kept, sloppy proxies.
         auto* undo = window->session()->undo();
-        const NodeId cluster = window->session()->document().clusterNode();
-        const NodeId bake = window->session()->document().bakeNode();
+        const NodeId cluster = kDefaultCluster;
+        const NodeId bake = kDefaultBake;
         ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(bake, "cache", false)));
         ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(bake, "threads", 2)));
         ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(cluster, "level_growth", 1.0)));
@@ -81,19 +81,8 @@ protected:
     }
 
     // Waits for the build that an edit (or the Build action) started to finish.
-    bool built() {
-        return waitUntil([this] {
-            return window->model()->hasBuild() && !window->model()->building() && settled();
-        });
-    }
-    // No rebuild pending: the shown build has the document's settings.
-    bool settled() const {
-        const widgets::BuiltHlod& b = window->model()->built();
-        const HlodSettings wanted = window->session()->settings();
-        return b.build && sameClustering(wanted, b.build->settings) &&
-               sameBaking(wanted, b.build->settings);
-    }
-    const ClusterTree& tree() const { return window->model()->built().build->tree; }
+    bool built() { return waitSettled(*window); }
+    const ClusterTree& tree() const { return *window->model()->built().build->tree; }
     ClusterTreeModel* rows() const {
         return static_cast<ClusterTreeModel*>(window->clusterTree()->model());
     }
@@ -130,7 +119,8 @@ TEST_F(EditingWindow, MergingTheOnlyTwoChildrenOfAClusterChangesNoOtherCluster) 
     click(tree().nodes[c].children[1], Qt::ControlModifier);
     ASSERT_TRUE(window->clusterEdits()->mergeAction()->isEnabled());
     keys(QKeySequence(Qt::CTRL | Qt::Key_G)); // Merge Clusters
-    ASSERT_EQ(window->session()->undo()->stack()->undoText(), QStringLiteral("Merge clusters"));
+    ASSERT_EQ(window->session()->undo()->stack()->undoText(),
+              QStringLiteral("Merge clusters (Cluster #2)"));
     ASSERT_TRUE(built());
     EXPECT_EQ(tree().nodes.size(), nodes);
     EXPECT_EQ(tree().height(), height);

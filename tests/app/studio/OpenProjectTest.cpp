@@ -52,12 +52,12 @@ protected:
     // What the project holds, as the window shows it.
     void expectProjectShown() {
         const Document& doc = window->session()->document();
-        const GraphNode& cluster = doc.graph().node(doc.clusterNode());
+        const GraphNode& cluster = doc.graph().node(kDefaultCluster);
         EXPECT_EQ(paramText(cluster.params, "volume"), "aabb");
         EXPECT_EQ(paramNumber(cluster.params, "k"), 2.0);
         EXPECT_EQ(cluster.edits.excluded, InstanceSet{3});
         ASSERT_TRUE(window->model()->hasBuild());
-        const ClusterTree& tree = window->model()->built().build->tree;
+        const ClusterTree& tree = *window->model()->built().build->tree;
         EXPECT_EQ(tree.volume, VolumeType::Aabb);
         EXPECT_EQ(tree.k, 2.0);
         EXPECT_EQ(tree.nodes[findCluster(tree, {3})].parent, tree.root);
@@ -131,7 +131,7 @@ TEST_F(OpenProject, OpenRecentListsTheProjectAndReopensIt) {
 TEST_F(OpenProject, RecoveryRestoresTheAutosavedEdits) {
     // The editor stopped after one more edit: the autosave (newer) also excludes instance 5.
     Document edited = openProject(project.toStdString());
-    edited.execute(std::make_unique<ExcludeInstance>(edited.clusterNode(), InstanceSet{5}));
+    edited.execute(std::make_unique<ExcludeInstance>(kDefaultCluster, InstanceSet{5}));
     writeAutosave(edited, project.toStdString());
     DialogAnswerer answer(clickButton(QMessageBox::Yes));
     window->openFiles({project});
@@ -139,8 +139,8 @@ TEST_F(OpenProject, RecoveryRestoresTheAutosavedEdits) {
     ASSERT_EQ(answer.messages().size(), 1);
     EXPECT_TRUE(answer.messages().front().contains(QStringLiteral("autosave")));
     const Document& doc = window->session()->document();
-    EXPECT_EQ(doc.graph().node(doc.clusterNode()).edits.excluded, (InstanceSet{3, 5}));
-    const ClusterTree& tree = window->model()->built().build->tree;
+    EXPECT_EQ(doc.graph().node(kDefaultCluster).edits.excluded, (InstanceSet{3, 5}));
+    const ClusterTree& tree = *window->model()->built().build->tree;
     EXPECT_EQ(tree.nodes[findCluster(tree, {5})].parent, tree.root);
     EXPECT_TRUE(window->isWindowModified()); // recovered, not saved yet
 }

@@ -11,6 +11,8 @@
 
 #include "pipeline/doc/Commands.h"
 #include "pipeline/doc/ProjectFile.h"
+#include "widgets/StudioModel.h"
+#include "widgets/doc/ProjectSession.h"
 
 namespace hlod::studio::test {
 
@@ -65,10 +67,22 @@ std::function<bool(QDialog*)> clickButton(int standardButton) {
     };
 }
 
+bool settled(const MainWindow& window) {
+    const widgets::StudioModel* model = window.model();
+    const PipelineGraph& g = window.session()->document().graph();
+    const NodeId shown = model->shownBake();
+    return !model->building() && model->hasBuild() && shown != kNoNode && g.hasNode(shown) &&
+           g.status(shown) == NodeStatus::UpToDate && model->built().build == g.sharedOutput(shown);
+}
+
+bool waitSettled(const MainWindow& window) {
+    return waitUntil([&window] { return settled(window); });
+}
+
 void writeSampleProject(const QString& path) {
     Document doc; // no sources: the embedded sample scene
-    const NodeId cluster = doc.clusterNode();
-    const NodeId bake = doc.bakeNode();
+    const NodeId cluster = kDefaultCluster;
+    const NodeId bake = kDefaultBake;
     doc.execute(std::make_unique<SetParameter>(cluster, "volume", std::string("aabb")));
     doc.execute(std::make_unique<SetParameter>(cluster, "k", 2.0));
     doc.execute(std::make_unique<SetParameter>(bake, "cache", false));

@@ -40,6 +40,12 @@ private:
 // `answer` for message boxes: clicks the button with `role` ("Yes", "Ok", ...).
 std::function<bool(QDialog*)> clickButton(int standardButton);
 
+// The window shows the shown branch's build up to date: no run going on, the shown Bake node up
+// to date in the document's graph and its output the shown build (no rerun pending).
+bool settled(const MainWindow& window);
+// Waits (two minutes at most) until settled().
+bool waitSettled(const MainWindow& window);
+
 // Writes a project over the embedded sample scene with the given edits to `path`: volume
 // AABB, k = 2, proxies without the disk cache on two threads, instance 3 excluded.
 void writeSampleProject(const QString& path);

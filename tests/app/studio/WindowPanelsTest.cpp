@@ -25,7 +25,6 @@
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
 #include "widgets/ExportDialog.h"
-#include "widgets/PackageExporter.h"
 #include "widgets/StatsPanel.h"
 #include "widgets/StudioModel.h"
 #include "widgets/Viewport.h"
@@ -49,24 +48,16 @@ protected:
         window->openFiles({});
         ASSERT_TRUE(waitUntil([this] { return window->model()->scene() != nullptr; }));
         auto* undo = window->session()->undo();
-        const NodeId bake = window->session()->document().bakeNode();
+        const NodeId bake = kDefaultBake;
         ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(bake, "cache", false)));
         ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(bake, "threads", 2)));
         window->findChild<QAction*>(QStringLiteral("actionBuild"))->trigger();
         ASSERT_TRUE(built());
     }
-    bool built() {
-        return waitUntil([this] {
-            const widgets::BuiltHlod& b = window->model()->built();
-            const HlodSettings wanted = window->session()->settings();
-            return b.build && !window->model()->building() &&
-                   sameClustering(wanted, b.build->settings) &&
-                   sameBaking(wanted, b.build->settings);
-        });
-    }
+    bool built() { return waitSettled(*window); }
     NodeStatus exportStatus() const {
         auto* pipeline = window->findChild<widgets::PipelineEditor*>();
-        return pipeline->view()->shownStatus(window->session()->document().exportNode());
+        return pipeline->view()->shownStatus(kDefaultExport);
     }
 
     std::unique_ptr<MainWindow> window;
@@ -83,17 +74,19 @@ TEST_F(WindowPanels, ExportNodeIsUpToDateAfterAnExportAndPendingAfterAChange) {
         if (!started) {
             exportDialog->setFolder(folder);
             started = exportDialog->startExport();
-        } else if (!exportDialog->exporter()->busy()) {
+        } else if (!exportDialog->running()) {
             exportDialog->close(); // the Close button once the package is written
         }
         return true;
     });
     window->findChild<QAction*>(QStringLiteral("actionExport"))->trigger(); // returns when closed
     ASSERT_TRUE(started);
-    EXPECT_EQ(window->model()->exportState().folder, folder);
+    const PipelineGraph& g = window->session()->document().graph();
+    EXPECT_EQ(paramText(g.node(kDefaultExport).params, "output"), folder.toStdString());
     EXPECT_EQ(exportStatus(), NodeStatus::UpToDate);
+    EXPECT_TRUE(QFileInfo::exists(folder + QStringLiteral("/tileset.json")));
     // Another screen size: a new build, whose package is not written yet.
-    const NodeId bake = window->session()->document().bakeNode();
+    const NodeId bake = kDefaultBake;
     ASSERT_TRUE(window->session()->undo()->execute(
         std::make_unique<SetParameter>(bake, "screen_size", 200.0)));
     ASSERT_TRUE(built());
@@ -116,7 +109,7 @@ TEST_F(WindowPanels, ClustersTabShowsEveryColumnWithUnitsAtTheDefaultDockWidth) 
     // Sizes with a unit, never in scientific notation.
     auto* model = static_cast<ClusterTreeModel*>(view->model());
     const QRegularExpression readable(QStringLiteral("^[0-9.,]+ (km|m|cm|mm)$"));
-    const ClusterTree& tree = window->model()->built().build->tree;
+    const ClusterTree& tree = *window->model()->built().build->tree;
     for (Id n = 0; n < tree.nodes.size(); ++n) {
         const QString text =
             model->data(model->indexOfNode(n).siblingAtColumn(ClusterTreeModel::SizeColumn))
@@ -239,7 +232,7 @@ TEST_F(WindowPanels, StatisticsSayWhatHlodTrianglesCountAndShowTheLevels) {
     EXPECT_EQ(levels->item(last, StatsPanel::LevelTrianglesColumn)->text(),
               QLocale().toString(qulonglong(top.triangles)));
     // The proxy economy's decisions.
-    const std::size_t dissolved = b.build->bake.dissolved;
+    const std::size_t dissolved = b.build->bake->dissolved;
     EXPECT_TRUE(stats->economyLabel()->text().startsWith(
         dissolved == 1 ? QStringLiteral("Proxy economy: 1 cluster dissolved")
                        : QStringLiteral("Proxy economy: %1 clusters dissolved").arg(dissolved)))

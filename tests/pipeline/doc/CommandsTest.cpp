@@ -26,7 +26,7 @@ protected:
         doc.undo();
         EXPECT_EQ(doc.toJson(), before) << name;
     }
-    NodeId cluster() const { return doc.clusterNode(); }
+    NodeId cluster() const { return kDefaultCluster; }
 };
 
 TEST_F(Commands, SetParameter) {
@@ -45,7 +45,7 @@ TEST_F(Commands, AddNodeGivesItsIdBack) {
 }
 
 TEST_F(Commands, RemoveNodeRestoresItsConnections) {
-    expectUndoRedoExact(std::make_unique<RemoveNode>(doc.bakeNode()));
+    expectUndoRedoExact(std::make_unique<RemoveNode>(kDefaultBake));
     EXPECT_EQ(doc.graph().connections().size(), 3u);
 }
 
@@ -58,6 +58,55 @@ TEST_F(Commands, ConnectAndDisconnect) {
 }
 
 TEST_F(Commands, MoveNode) { expectUndoRedoExact(std::make_unique<MoveNode>(2, 1.0, 2.0)); }
+
+TEST_F(Commands, AddNodeAfterAnotherConnectsItInTheSameStep) {
+    expectUndoRedoExact(std::make_unique<AddNode>(NodeKind::Bake, 5.0, 6.0, kDefaultCluster));
+    doc.execute(std::make_unique<AddNode>(NodeKind::Bake, 5.0, 6.0, kDefaultCluster));
+    EXPECT_EQ(doc.history().undoText(), "Add Bake #5");
+    EXPECT_EQ(doc.graph().upstreamOf(5), kDefaultCluster);
+    // A Bake cannot take an Import's scene: refused, nothing added.
+    EXPECT_THROW(doc.execute(std::make_unique<AddNode>(NodeKind::Bake, 0.0, 0.0, 1)), Error);
+    EXPECT_FALSE(doc.graph().hasNode(6));
+    EXPECT_EQ(doc.graph().nextId(), 6u);
+}
+
+TEST_F(Commands, DisconnectNodeTakesEveryConnectionOfTheNode) {
+    expectUndoRedoExact(std::make_unique<DisconnectNode>(kDefaultBake));
+    doc.execute(std::make_unique<DisconnectNode>(kDefaultBake));
+    EXPECT_EQ(doc.history().undoText(), "Disconnect Bake #3");
+    EXPECT_EQ(doc.graph().connections().size(), 1u); // Import -> Cluster stays
+}
+
+TEST_F(Commands, RenameNodeChangesOnlyTheName) {
+    expectUndoRedoExact(std::make_unique<RenameNode>(kDefaultBake, "coarse"));
+    doc.graph().run({kDefaultCluster});
+    doc.execute(std::make_unique<RenameNode>(kDefaultCluster, "spheres"));
+    EXPECT_EQ(doc.history().undoText(), "Rename Cluster #2 to 'spheres'");
+    EXPECT_EQ(describeNode(doc.graph().node(kDefaultCluster)), "Cluster #2 'spheres'");
+    EXPECT_EQ(doc.graph().status(kDefaultCluster), NodeStatus::UpToDate); // nothing to rerun
+}
+
+TEST_F(Commands, DuplicateBranchMakesASecondVariantFromTheSameImport) {
+    doc.graph().setParam(kDefaultExport, "output", std::string("/out/pkg"));
+    const std::vector<NodeId> branch = DuplicateNodes::branchFrom(doc.graph(), kDefaultCluster);
+    EXPECT_EQ(branch, (std::vector<NodeId>{2, 3, 4}));
+    expectUndoRedoExact(std::make_unique<DuplicateNodes>(
+        branch, std::vector<std::pair<double, double>>{{0, 100}, {200, 100}, {400, 100}}, true));
+    auto dup = std::make_unique<DuplicateNodes>(
+        branch, std::vector<std::pair<double, double>>{{0, 100}, {200, 100}, {400, 100}}, true);
+    DuplicateNodes* made = dup.get();
+    doc.execute(std::move(dup));
+    EXPECT_EQ(doc.history().undoText(), "Duplicate the branch of Cluster #2 (3 nodes)");
+    EXPECT_EQ(made->copies(), (std::vector<NodeId>{5, 6, 7}));
+    const PipelineGraph& g = doc.graph();
+    // Import #1 feeds both Cluster nodes; the copies are chained like the originals.
+    EXPECT_EQ(g.branchOf(7), (std::vector<NodeId>{1, 5, 6, 7}));
+    EXPECT_EQ(g.node(5).params, g.node(2).params);
+    EXPECT_EQ(g.node(6).x, 200.0);
+    // The copied Export writes its own folder: the original's, with the copy's id.
+    EXPECT_EQ(paramText(g.node(7).params, "output"), "/out/pkg-7");
+    EXPECT_EQ(g.nodesOf(NodeKind::Export), (std::vector<NodeId>{4, 7}));
+}
 
 TEST_F(Commands, MergeClusters) {
     expectUndoRedoExact(
@@ -104,12 +153,12 @@ TEST_F(Commands, UndoRedoSequencesWalkTheHistory) {
     doc.execute(std::make_unique<SetParameter>(cluster(), "max_children", 4));
     doc.execute(std::make_unique<LockCluster>(cluster(), InstanceSet{3, 4}));
     const nlohmann::json three = doc.toJson();
-    EXPECT_EQ(doc.history().undoText(), "Lock cluster");
+    EXPECT_EQ(doc.history().undoText(), "Lock cluster (Cluster #2)");
     doc.undo();
     doc.undo();
     EXPECT_EQ(paramNumber(doc.graph().node(cluster()).params, "k"), 1.0);
     EXPECT_EQ(paramInt(doc.graph().node(cluster()).params, "max_children"), 8);
-    EXPECT_EQ(doc.history().redoText(), "Set Max children");
+    EXPECT_EQ(doc.history().redoText(), "Set Max children of Cluster #2");
     doc.redo();
     doc.redo();
     EXPECT_EQ(doc.toJson(), three);
@@ -134,7 +183,7 @@ TEST_F(Commands, ASliderDragIsOneUndoStep) {
     EXPECT_EQ(paramNumber(doc.graph().node(cluster()).params, "k"), 2.0);
     // Another drag, or another parameter with the same id, is a new step.
     doc.execute(std::make_unique<SetParameter>(cluster(), "k", 3.0, doc.history().newMergeId()));
-    doc.execute(std::make_unique<SetParameter>(doc.bakeNode(), "screen_size", 100.0, drag));
+    doc.execute(std::make_unique<SetParameter>(kDefaultBake, "screen_size", 100.0, drag));
     EXPECT_EQ(doc.history().count(), 3u);
 }
 

@@ -14,14 +14,14 @@ class DocumentFixture : public ::testing::Test {
 protected:
     DocumentFixture() : doc(makeSources()) {
         PipelineGraph& g = doc.graph();
-        g.setParam(doc.clusterNode(), "volume", std::string("aabb"));
-        g.setParam(doc.clusterNode(), "k", 0.0);
+        g.setParam(kDefaultCluster, "volume", std::string("aabb"));
+        g.setParam(kDefaultCluster, "k", 0.0);
         // The thesis' merges and every proxy kept: the trees the tests describe (level growth
         // and the proxy economy have tests of their own).
-        g.setParam(doc.clusterNode(), "level_growth", 1.0);
-        g.setParam(doc.bakeNode(), "proxy_ratio", 1.0);
-        g.setParam(doc.bakeNode(), "cache_dir", (tmp / "cache").string());
-        g.setParam(doc.bakeNode(), "threads", 2);
+        g.setParam(kDefaultCluster, "level_growth", 1.0);
+        g.setParam(kDefaultBake, "proxy_ratio", 1.0);
+        g.setParam(kDefaultBake, "cache_dir", (tmp / "cache").string());
+        g.setParam(kDefaultBake, "threads", 2);
     }
 
     std::vector<std::filesystem::path> makeSources() {
@@ -31,12 +31,12 @@ protected:
 
     // Runs up to the Bake node and returns its result.
     const BakeResult& bake() {
-        doc.graph().run({doc.bakeNode()});
-        return *doc.graph().output(doc.bakeNode())->bake;
+        doc.graph().run({kDefaultBake});
+        return *doc.graph().output(kDefaultBake)->bake;
     }
     const ClusterTree& tree() {
-        doc.graph().run({doc.clusterNode()});
-        return *doc.currentTree(doc.clusterNode());
+        doc.graph().run({kDefaultCluster});
+        return *doc.currentTree(kDefaultCluster);
     }
 
     TempDir tmp;

@@ -16,11 +16,11 @@ using HandEditRerun = test::DocumentFixture;
 TEST_F(HandEditRerun, MergedClusterStaysOneLockedSubtreeWhenKAndVolumeChange) {
     // A (x = 0) and F (x = 200) never pair on cost; merged by hand they must stay one subtree.
     doc.execute(
-        std::make_unique<MergeClusters>(doc.clusterNode(), std::vector<InstanceSet>{{0}, {5}}));
+        std::make_unique<MergeClusters>(kDefaultCluster, std::vector<InstanceSet>{{0}, {5}}));
     for (const auto& [volume, k] : std::vector<std::pair<std::string, double>>{
              {"aabb", 0.0}, {"aabb", 2.0}, {"sphere", 1.0}, {"octree", 1.0}}) {
-        doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "volume", volume));
-        doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", k));
+        doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "volume", volume));
+        doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", k));
         const ClusterTree& t = tree();
         ASSERT_EQ(validateClusterTree(t, 7), "") << volume;
         const Id g = findCluster(t, {0, 5});
@@ -31,8 +31,8 @@ TEST_F(HandEditRerun, MergedClusterStaysOneLockedSubtreeWhenKAndVolumeChange) {
 
 TEST_F(HandEditRerun, SplitHoldsAfterARerunWithNewParameters) {
     tree();
-    doc.execute(std::make_unique<SplitCluster>(doc.clusterNode(), InstanceSet{0, 1, 2}));
-    doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "max_children", 4));
+    doc.execute(std::make_unique<SplitCluster>(kDefaultCluster, InstanceSet{0, 1, 2}));
+    doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "max_children", 4));
     const ClusterTree& t = tree();
     ASSERT_EQ(validateClusterTree(t, 7), "");
     EXPECT_EQ(findCluster(t, {0, 1, 2}), kNoId); // dissolved again in the new tree
@@ -40,10 +40,10 @@ TEST_F(HandEditRerun, SplitHoldsAfterARerunWithNewParameters) {
 }
 
 TEST_F(HandEditRerun, ExcludedAndMovedInstancesKeepTheirPlace) {
-    doc.execute(std::make_unique<ExcludeInstance>(doc.clusterNode(), InstanceSet{1}));
-    doc.execute(std::make_unique<MoveToCluster>(doc.clusterNode(), std::vector<InstanceSet>{{2}},
+    doc.execute(std::make_unique<ExcludeInstance>(kDefaultCluster, InstanceSet{1}));
+    doc.execute(std::make_unique<MoveToCluster>(kDefaultCluster, std::vector<InstanceSet>{{2}},
                                                 InstanceSet{5, 6}));
-    doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 1.0));
+    doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 1.0));
     const ClusterTree& t = tree();
     ASSERT_EQ(validateClusterTree(t, 7), "");
     EXPECT_EQ(t.nodes[1].parent, t.root);
@@ -57,8 +57,8 @@ TEST_F(HandEditRerun, OnlyTheEditedClustersAndTheirAncestorsAreRebaked) {
     // Merging DE and FG changes the tree only there (LocalConstraints.h): DE and FG stay and a
     // locked {DE, FG} takes their place under the root. 5 inner nodes: ABC, DE, FG, {DE, FG}
     // and the root; {DE, FG} and the root are new, ABC, DE and FG come from the cache.
-    doc.execute(std::make_unique<MergeClusters>(doc.clusterNode(),
-                                                std::vector<InstanceSet>{{3, 4}, {5, 6}}));
+    doc.execute(
+        std::make_unique<MergeClusters>(kDefaultCluster, std::vector<InstanceSet>{{3, 4}, {5, 6}}));
     const BakeResult& merged = bake();
     EXPECT_EQ(merged.innerNodes, 5u);
     EXPECT_EQ(merged.baked, 2u);
@@ -73,7 +73,7 @@ TEST_F(HandEditRerun, OnlyTheEditedClustersAndTheirAncestorsAreRebaked) {
     // Splitting ABC: {ABC, DE} now holds A, B, C and DE, so it and the root are rebaked; DE and
     // FG are reused; ABC is gone (4 inner nodes).
     tree();
-    doc.execute(std::make_unique<SplitCluster>(doc.clusterNode(), InstanceSet{0, 1, 2}));
+    doc.execute(std::make_unique<SplitCluster>(kDefaultCluster, InstanceSet{0, 1, 2}));
     const BakeResult& split = bake();
     EXPECT_EQ(split.innerNodes, 4u);
     EXPECT_EQ(split.baked, 2u);

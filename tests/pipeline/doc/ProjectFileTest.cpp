@@ -25,10 +25,10 @@ std::pair<ErrorCode, std::string> errorOf(const std::function<void()>& f) {
 }
 
 TEST_F(ProjectFile, RoundTripKeepsGraphParametersHandEditsAndView) {
-    doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 2.0));
+    doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 2.0));
     doc.execute(
-        std::make_unique<MergeClusters>(doc.clusterNode(), std::vector<InstanceSet>{{0}, {5}}));
-    doc.execute(std::make_unique<ExcludeInstance>(doc.clusterNode(), InstanceSet{3}));
+        std::make_unique<MergeClusters>(kDefaultCluster, std::vector<InstanceSet>{{0}, {5}}));
+    doc.execute(std::make_unique<ExcludeInstance>(kDefaultCluster, InstanceSet{3}));
     doc.setViewState({{"camera", {{"distance", 12.5}}}});
     const auto file = tmp / "p.hlodproj";
     saveProject(doc, file);
@@ -50,6 +50,22 @@ TEST_F(ProjectFile, MovingTheFolderKeepsTheProjectWorking) {
     const std::filesystem::path moved = tmp.path().string() + "-moved";
     const Document back = openProject(moved / "p.hlodproj");
     EXPECT_EQ(back.sources()[0], moved / "scene" / "cube_0.glb");
+    std::filesystem::rename(moved, tmp.path());
+}
+
+TEST_F(ProjectFile, OutputFoldersAreTheProjectsLikeItsScenes) {
+    // Each Export's package goes where the project says, whatever folder `hlod build` runs in.
+    doc.graph().setParam(kDefaultExport, "output", (tmp / "packages" / "a").string());
+    saveProject(doc, tmp / "p.hlodproj");
+    std::ifstream in(tmp / "p.hlodproj");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["graph"]["nodes"][3]["params"]["output"], "packages/a");
+    EXPECT_EQ(j["graph"]["nodes"][2]["params"]["cache_dir"], "cache"); // the fixture's cache
+    std::filesystem::rename(tmp.path(), tmp.path().string() + "-moved");
+    const std::filesystem::path moved = tmp.path().string() + "-moved";
+    const Document back = openProject(moved / "p.hlodproj");
+    EXPECT_EQ(paramText(back.graph().node(kDefaultExport).params, "output"),
+              (moved / "packages" / "a").string());
     std::filesystem::rename(moved, tmp.path());
 }
 
@@ -83,7 +99,7 @@ TEST_F(ProjectFile, ErrorsNameTheFileAndTheProblem) {
 TEST_F(ProjectFile, SaveReplacesAtomicallyAndLeavesNoTemporaryFiles) {
     const auto file = tmp / "p.hlodproj";
     saveProject(doc, file);
-    doc.execute(std::make_unique<SetParameter>(doc.clusterNode(), "k", 3.0));
+    doc.execute(std::make_unique<SetParameter>(kDefaultCluster, "k", 3.0));
     saveProject(doc, file);
     EXPECT_EQ(paramNumber(openProject(file).graph().node(2).params, "k"), 3.0);
     int files = 0;
@@ -99,7 +115,7 @@ TEST_F(ProjectFile, AutosaveIsDetectedWhenNewerAndRecovers) {
     const auto file = tmp / "p.hlodproj";
     saveProject(doc, file);
     EXPECT_FALSE(autosaveIsNewer(file));
-    doc.execute(std::make_unique<LockCluster>(doc.clusterNode(), InstanceSet{3, 4}));
+    doc.execute(std::make_unique<LockCluster>(kDefaultCluster, InstanceSet{3, 4}));
     // Make the autosave's time stamp strictly newer than the project's.
     std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) -
                                                std::chrono::seconds(10));

@@ -9,7 +9,6 @@
 
 #include "TestUtil.h"
 #include "pipeline/core/Error.h"
-#include "pipeline/doc/HlodBuild.h"
 #include "pipeline/graph/Parameters.h"
 
 namespace hlod {
@@ -38,17 +37,17 @@ TEST(Parameters, EveryBuildFlagIsDeclaredOnceWithAValidDefault) {
 }
 
 TEST(Parameters, DefaultsAreThoseOfThePipelineStructs) {
-    const HlodSettings s =
-        hlodSettingsFrom(defaultValues(NodeKind::Cluster), defaultValues(NodeKind::Bake));
+    const ClusterParams cluster = clusterParamsFrom(defaultValues(NodeKind::Cluster));
+    const BakeParams bake = bakeParamsFrom(defaultValues(NodeKind::Bake));
     const ClusterParams cp;
-    EXPECT_EQ(s.cluster.volume, cp.volume);
-    EXPECT_EQ(s.cluster.k, cp.k);
-    EXPECT_EQ(s.cluster.maxChildren, cp.maxChildren);
+    EXPECT_EQ(cluster.volume, cp.volume);
+    EXPECT_EQ(cluster.k, cp.k);
+    EXPECT_EQ(cluster.maxChildren, cp.maxChildren);
     // Level growth: the library keeps the thesis' merges, the tool coarsens (LevelGrowth.h).
-    EXPECT_EQ(s.cluster.levelGrowth, kDefaultLevelGrowth);
-    EXPECT_EQ(s.bake.screen.screenSize, 300.0); // DESIGN.md: S defaults to 300 px
-    EXPECT_EQ(s.bake.screen.pixelError, 1.0);
-    EXPECT_EQ(s.bake.method, ProxyMethod::Decimate);
+    EXPECT_EQ(cluster.levelGrowth, kDefaultLevelGrowth);
+    EXPECT_EQ(bake.screen.screenSize, 300.0); // the thesis' S: 300 px
+    EXPECT_EQ(bake.screen.pixelError, 1.0);
+    EXPECT_EQ(bake.method, ProxyMethod::Decimate);
     const ImportOptions io = importOptionsFrom(defaultValues(NodeKind::Import));
     EXPECT_EQ(io.cadRelativeDeflection, ImportOptions{}.cadRelativeDeflection);
     EXPECT_EQ(io.cadBrepUnitMetres, ImportOptions{}.cadBrepUnitMetres);
