@@ -23,8 +23,10 @@
 //    a sheet, a kerb along a road).
 // Early finish: a node whose proxy keeps more than 60 % of its input triangles is dissolved by
 // any useful proxy ratio (ProxyBaker.h); when meshoptimizer's quick pass at the same error
-// (which removes more than a certified simplification can) keeps more than that, or the
-// mapping step does, the later steps are skipped. The result is still certified.
+// keeps more than that, the certified steps are skipped and the node is dissolved. The
+// prediction is not exact: on torcs-spring it skips 37 clusters of 528 dissolved that a full
+// run would have kept (share 31.5 -> 31.1 %) and saves 13 % of the bake's CPU; on the engine
+// and the cruiser none. The result is still certified.
 // Guarantee: the proxy lies within maxError of the original meshes and every point of them
 // within maxError of the proxy, except the parts of step 2; its errorBound says so.
 // Output: finished proxy (normals, render layout), never more triangles than the input.

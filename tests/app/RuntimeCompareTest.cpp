@@ -92,16 +92,9 @@ class RuntimeScene : public ::testing::TestWithParam<SharedScene> {};
 
 constexpr int kWidth = 640, kHeight = 360;
 
-// Back faces: the bench culls them unless a material is double-sided once materials are kept as
-// authored (issue 28's other half: pipeline/proxy/ProxyLook.h and the culling in
-// OffscreenRenderer), as the runtimes do by default. Before that it draws both sides, and the
-// runtimes are told to draw both sides too (--cull none), so the comparison still measures
-// everything else (the OCCT kitchen's room, seen from outside, is all back faces).
-#if __has_include("pipeline/proxy/ProxyLook.h")
+// Back faces: the bench culls them unless a material is double-sided (materials as authored,
+// pipeline/proxy/ProxyLook.h and OffscreenRenderer), as the runtimes do by default for glTF.
 constexpr const char* kCull = "gltf";
-#else
-constexpr const char* kCull = "none";
-#endif
 
 } // namespace
 

@@ -445,7 +445,7 @@ void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& o) {
                     r.triangles += c.selection->triangles(n);
                 }
                 parent = [&c](int n) {
-                    const Id p = c.build->tree.nodes[static_cast<std::size_t>(n)].parent;
+                    const Id p = c.build->tree->nodes[static_cast<std::size_t>(n)].parent;
                     return p == kNoId ? -1 : static_cast<int>(p);
                 };
             } else {
