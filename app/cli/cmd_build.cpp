@@ -11,6 +11,8 @@
 // edits included; flags given on the command line override the project's values on every
 // node of their kind, and -o overrides the Export node's output folder. Without a project the
 // default graph Import -> Cluster -> Bake -> Export runs over the SCENE files.
+// The proxies line is followed by the bake's throughput (the scene's original triangles per
+// CPU second of the bake, every thread's time counted) and the process's peak memory.
 // The summary ends with the package's bytes on disk (allocated blocks) and file count next to
 // the source's (the scene files and every file they reference), and their ratio.
 //
@@ -86,6 +88,13 @@ void printDisk(const ExportResult& ex) {
     std::printf("\n");
 }
 
+// Original triangles of the scene per CPU second of the bake (0 when the bake took no time,
+// e.g. everything came from the cache within the clock's resolution).
+double bakeThroughput(const NodeOutput& out) {
+    const double cpu = out.bake->cpuSeconds;
+    return cpu > 0.0 ? static_cast<double>(out.scene->stats().triangles) / cpu : 0.0;
+}
+
 void printJson(const NodeOutput& out, const PlanCheck& plan) {
     const ExportResult& ex = *out.exported;
     nlohmann::json j = buildTreeJson(*out.scene, *out.tree, *out.bake, ex.info);
@@ -113,8 +122,11 @@ void printJson(const NodeOutput& out, const PlanCheck& plan) {
     }
     j["seconds"] = {{"cluster", out.clusterSeconds},
                     {"bake", out.bake->seconds},
+                    {"bake_cpu", out.bake->cpuSeconds},
                     {"dlod", ex.dlodSeconds},
                     {"write", ex.writeSeconds}};
+    j["bake_triangles_per_cpu_second"] = bakeThroughput(out);
+    j["peak_bytes"] = processUsage().peakBytes;
     std::cout << j.dump(2) << "\n";
 }
 
@@ -137,6 +149,11 @@ void printSummary(const NodeOutput& out, const PlanCheck& plan) {
                 "(%zu input triangles)\n",
                 toString(bp.method), bp.screen.screenSize, bp.screen.pixelError, bake.baked,
                 bake.reused, bake.seconds, bake.inputTriangles);
+    const ProcessUsage use = processUsage();
+    std::printf("throughput:   %.0f k original triangles per CPU second of the bake (%.2f CPU s); "
+                "peak memory %.0f MB\n",
+                bakeThroughput(out) / 1e3, bake.cpuSeconds,
+                static_cast<double>(use.peakBytes) / 1e6);
     if (plan.matches) {
         std::printf("plan:         %s: all %d shards finished; baked here %zu (%zu nodes above the "
                     "cut), the rest from the shards\n",

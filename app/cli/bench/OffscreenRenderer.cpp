@@ -45,13 +45,11 @@ unsigned char toByte(float c) {
 
 // `factor` multiplies the vertex colours (Textured shading: the material's base colour factor,
 // since VTK ignores the actor colour when a mesh has scalars); RGBA scalars when `withAlpha`.
-vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
-                                      const std::vector<glm::vec3>& normals,
-                                      const std::vector<std::uint32_t>& indices,
-                                      const std::vector<glm::vec4>* colorsLinear,
-                                      const std::vector<glm::u8vec4>* colors8,
-                                      const std::vector<glm::vec2>* uvs = nullptr,
-                                      glm::vec4 factor = glm::vec4(1.0f), bool withAlpha = false) {
+vtkSmartPointer<vtkPolyData>
+makePoly(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+         const std::vector<std::uint32_t>& indices, const std::vector<glm::vec4>* colorsLinear,
+         const std::vector<glm::u8vec4>* colors8, const std::vector<glm::vec2>* uvs = nullptr,
+         glm::vec4 factor = glm::vec4(1.0f), bool withAlpha = false) {
     const auto nv = static_cast<vtkIdType>(positions.size());
     const auto nt = static_cast<vtkIdType>(indices.size() / 3);
     vtkNew<vtkFloatArray> points;
@@ -91,8 +89,9 @@ vtkSmartPointer<vtkPolyData> makePoly(const std::vector<glm::vec3>& positions,
         unsigned char* p = c->GetPointer(0);
         for (vtkIdType i = 0; i < nv; ++i) {
             const glm::vec4 lin =
-                factor * (colorsLinear ? (*colorsLinear)[static_cast<std::size_t>(i)]
-                                       : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f);
+                factor * (colorsLinear
+                              ? (*colorsLinear)[static_cast<std::size_t>(i)]
+                              : glm::vec4((*colors8)[static_cast<std::size_t>(i)]) / 255.0f);
             for (int k = 0; k < 3; ++k)
                 p[comps * i + k] = toByte(toSrgb(lin[k]));
             if (withAlpha) p[comps * i + 3] = toByte(lin.a);
@@ -234,10 +233,10 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
     if (!poly) {
         // Textured: the factor goes into the vertex colours (one material per Mesh, so the
         // shared polydata is right for every instance).
-        poly = makePoly(mesh.positions, mesh.normals, mesh.indices,
-                        vertexColors ? &mesh.colors : nullptr, nullptr,
-                        textured ? &mesh.uvs : nullptr, textured ? look.factor : glm::vec4(1.0f),
-                        textured);
+        poly =
+            makePoly(mesh.positions, mesh.normals, mesh.indices,
+                     vertexColors ? &mesh.colors : nullptr, nullptr, textured ? &mesh.uvs : nullptr,
+                     textured ? look.factor : glm::vec4(1.0f), textured);
     }
     // Colour: vertex colours replace the actor colour (VTK ignores it with scalars).
     auto actor = impl_->makeActor(poly, textured ? look.factor : color, vertexColors);
@@ -249,7 +248,7 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
     return static_cast<int>(list.size()) - 1;
 }
 
-int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
+int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy, const glm::dmat4& frame) {
     const bool colour = impl_->shading != Shading::Geometry;
     const bool atlas = impl_->shading == Shading::Textured && proxy.hasAtlas();
     // With an atlas the texture carries the whole base colour (ProxyMesh.h).
@@ -264,7 +263,7 @@ int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
     } else if (impl_->shading == Shading::Textured) {
         applyAlphaMode(*actor, AlphaMode::Opaque, 0.5f);
     }
-    actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
+    actor->SetUserMatrix(toVtk(frame));
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
     list.push_back(actor);

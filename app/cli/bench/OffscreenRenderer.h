@@ -29,7 +29,7 @@ enum class Shading { Geometry, Colour, Textured };
 // What Textured shading needs of a surface. `texture` must outlive the renderer (it is shared
 // by every drawable using it, uploaded once with mipmaps, repeat wrap, linear filtering).
 struct SurfaceLook {
-    glm::vec4 factor{1.0f};            // linear RGBA base colour factor
+    glm::vec4 factor{1.0f};             // linear RGBA base colour factor
     const RgbaImage* texture = nullptr; // sRGB RGBA, top row first; null = untextured
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
@@ -52,8 +52,9 @@ public:
     int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color,
                 const SurfaceLook& look = {});
     // A proxy: its vertex colours in Colour shading; its baked atlas in Textured shading
-    // (vertex colours when it has none). The atlas image must outlive the renderer.
-    int addProxy(int layer, const ProxyMesh& proxy);
+    // (vertex colours when it has none), placed by its node's frame (NodeBake::frame). The
+    // atlas image must outlive the renderer.
+    int addProxy(int layer, const ProxyMesh& proxy, const glm::dmat4& frame);
 
     // Makes exactly `drawables` of `layer` visible (indices returned by add*).
     void setVisible(int layer, const std::vector<int>& drawables);
