@@ -10,8 +10,8 @@
 // package frame.
 // Boxes: in the tile's frame: its whole box, content and children (axis-aligned in the package
 // frame, PackageLayout.h), relative to its origin; in a turned frame that box is written as an
-// oriented box (the package's axes seen from the tile's frame), grown by what rounding its
-// numbers to 7 digits could take away.
+// oriented box (the package's axes seen from the tile's frame), its numbers in full and grown
+// by far more than the double rounding of the turn (turnedBoxVolume).
 #include <algorithm>
 
 #include "pipeline/export/JsonNumbers.h"
@@ -64,35 +64,27 @@ glm::dmat4 rigidInverse(const glm::dmat4& m) {
     return out;
 }
 
-// A package-frame box seen from a turned frame, as a Z-up oriented box rounded outward.
+// A package-frame box seen from a turned frame, as a Z-up oriented box. Its numbers are written
+// in full (shortest round trip): rounded to 7 digits, the turned half axes would poke out of
+// the parent's box by the rounding (1e-6 of the box), more than the containment a validator
+// accepts. Grown by 1e-9 of the box and its distance from the origin, far above the double
+// rounding of turning it and far below any tolerance.
 nlohmann::json turnedBoxVolume(const Aabb& b, const glm::dmat4& frame) {
     const glm::dmat3 back = glm::transpose(glm::dmat3(frame));
     const glm::dmat3 zUp(kYupToZup);
-    const glm::dvec3 c = zUp * (back * (b.center() - glm::dvec3(frame[3])));
+    const glm::dvec3 origin(frame[3]);
+    const glm::dvec3 c = zUp * (back * (b.center() - origin));
     const glm::dvec3 h = b.extent() * 0.5;
-    glm::dmat3 axes;
+    const double grow = 1e-9 * (h.x + h.y + h.z + glm::length(b.center()) + glm::length(origin));
+    nlohmann::json box = nlohmann::json::array();
+    for (int k = 0; k < 3; ++k)
+        box.push_back(c[k] + 0.0); // no negative zeros
     for (int a = 0; a < 3; ++a) {
         glm::dvec3 axis(0.0);
-        axis[a] = h[a];
-        axes[a] = zUp * (back * axis);
-    }
-    nlohmann::json box = nlohmann::json::array();
-    glm::dvec3 moved(0.0);
-    for (int k = 0; k < 3; ++k) {
-        const double rc = shortNumber(c[k]);
-        box.push_back(rc == 0.0 ? 0.0 : rc);
-        moved[k] = c[k] - rc;
-    }
-    // Each half axis grows by the centre's move plus a margin for the rounding of every axis'
-    // components (7 digits: 1e-6 of the longest, a little more than that for safety).
-    const double grow = glm::length(moved) + 1e-5 * (h.x + h.y + h.z);
-    for (int a = 0; a < 3; ++a) {
-        const double len = glm::length(axes[a]);
-        const glm::dvec3 axis = len > 0.0 ? axes[a] * ((len + grow) / len) : axes[a];
-        for (int k = 0; k < 3; ++k) {
-            const double v = shortNumber(axis[k]);
-            box.push_back(v == 0.0 ? 0.0 : v);
-        }
+        axis[a] = h[a] + grow;
+        const glm::dvec3 turned = zUp * (back * axis);
+        for (int k = 0; k < 3; ++k)
+            box.push_back(turned[k] + 0.0);
     }
     return box;
 }
