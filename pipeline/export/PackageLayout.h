@@ -80,11 +80,11 @@ struct ContentPlan {
     bool proxy = false; // a proxy (of `node`) or a leaf group
     Id node = kNoId;    // proxy: the inner node; group: the parent of its leaves (or kNoId)
     std::vector<LeafSlot> leaves;
-    glm::dvec3 proxyOffset{0.0};    // proxy: where its positions' origin sits in the content frame
-    glm::dmat3 proxyRotation{1.0};  // proxy: how its positions turn into the content frame
-    double positionStep = 0.0;      // proxy: requested grid (metres)
-    Aabb worldBounds;               // content placed by its tile, package frame, padded by the
-                                    // quantisation
+    glm::dvec3 proxyOffset{0.0};   // proxy: where its positions' origin sits in the content frame
+    glm::dmat3 proxyRotation{1.0}; // proxy: how its positions turn into the content frame
+    double positionStep = 0.0;     // proxy: requested grid (metres)
+    Aabb worldBounds;              // content placed by its tile, package frame, padded by the
+                                   // quantisation
 };
 
 struct TilePlan {

@@ -73,10 +73,10 @@ struct BakeParams {
 };
 
 struct NodeBake {
-    double diameter = 0.0;          // metres (ErrorBudget.h nodeDiameter)
-    double errorBudget = 0.0;       // e = t * diameter / S, metres
-    double switchDistance = 0.0;    // metres
-    std::uint64_t key = 0;          // cache key (leaves: key of their mesh and material)
+    double diameter = 0.0;       // metres (ErrorBudget.h nodeDiameter)
+    double errorBudget = 0.0;    // e = t * diameter / S, metres
+    double switchDistance = 0.0; // metres
+    std::uint64_t key = 0;       // cache key (leaves: key of their mesh and material)
     // Inner nodes: the frame the proxy lives in (world = frame.matrix() * proxy position);
     // leaves: their instance's translation and frameRotation of its linear part.
     RigidFrame frame;
