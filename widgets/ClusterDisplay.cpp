@@ -158,7 +158,7 @@ vtkSmartPointer<vtkPolyData> hlodPreview(const Scene& scene, const NodeOutput& b
             if (node.instance < scene.instances.size())
                 geometry.addInstance(scene, node.instance, n, tint);
         } else if (n < build.bake->nodes.size()) {
-            geometry.addProxy(build.bake->nodes[n].proxy, n, tint);
+            geometry.addProxy(build.bake->nodes[n].proxy, build.bake->nodes[n].frame, n, tint);
         }
     }
     return geometry.finish();
@@ -193,7 +193,8 @@ vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const NodeOutp
             if (node.instance < scene.instances.size())
                 geometry.addInstance(scene, node.instance, n, kHighlightColor);
         } else if (n < build.bake->nodes.size()) {
-            geometry.addProxy(build.bake->nodes[n].proxy, n, kHighlightColor);
+            geometry.addProxy(build.bake->nodes[n].proxy, build.bake->nodes[n].frame, n,
+                              kHighlightColor);
         }
     }
     return geometry.finish();

@@ -100,13 +100,13 @@ glm::vec4 withEmission(const ProxyMesh& proxy, const glm::vec4& c) {
 
 } // namespace
 
-VertexRange MergedGeometry::addProxy(const ProxyMesh& proxy, Id id,
+VertexRange MergedGeometry::addProxy(const ProxyMesh& proxy, const RigidFrame& frame, Id id,
                                      std::optional<glm::vec3> color) {
     const std::size_t base = vertexCount();
     for (std::size_t i = 0; i < proxy.positions.size(); ++i) {
-        const glm::dvec3 p = proxy.origin + glm::dvec3(proxy.positions[i]);
+        const glm::dvec3 p = frame.origin + frame.rotation * glm::dvec3(proxy.positions[i]);
         const glm::dvec3 n = i < proxy.normals.size()
-                                 ? unitOr(glm::dvec3(proxy.normals[i]), {0, 0, 1})
+                                 ? frame.rotation * unitOr(glm::dvec3(proxy.normals[i]), {0, 0, 1})
                                  : glm::dvec3(0, 0, 1);
         const glm::vec3 c =
             color ? *color

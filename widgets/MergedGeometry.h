@@ -23,6 +23,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ProxyMesh.h"
 #include "pipeline/scene/Scene.h"
 
@@ -40,7 +41,8 @@ public:
     // Instance `instance` of `scene`, in world space.
     VertexRange addInstance(const Scene& scene, Id instance, Id id,
                             std::optional<glm::vec3> color = std::nullopt);
-    VertexRange addProxy(const ProxyMesh& proxy, Id id,
+    // `proxy` placed by its node's frame (NodeBake::frame).
+    VertexRange addProxy(const ProxyMesh& proxy, const RigidFrame& frame, Id id,
                          std::optional<glm::vec3> color = std::nullopt);
 
     std::size_t vertexCount() const { return positions_.size() / 3; }

@@ -128,7 +128,7 @@ vtkActor* TexturedPreview::actorFor(const Scene& scene, const NodeOutput& build,
         mapper->SetInputData(
             makePoly(proxy.positions, proxy.normals, proxy.uvs, proxy.indices, nullptr, {}));
         mapper->SetScalarVisibility(false);
-        actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
+        actor->SetUserMatrix(toVtk(build.bake->nodes[n].frame.matrix()));
         actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
         actor->SetTexture(textureFor(*proxy.atlas->image));
         VtkMaterialLook look;

@@ -17,6 +17,8 @@
 // --json, --export and --shard are this command's own. Flags given on the command line override
 // the project's values on every node of their kind. Without a project the default graph
 // Import -> Cluster -> Bake -> Export runs over the SCENE files.
+// The proxies line is followed by the bake's throughput (the scene's original triangles per
+// CPU second of the bake, every thread's time counted) and the process's peak memory.
 // The summary ends with the package's bytes on disk (allocated blocks) and file count next to
 // the source's (the scene files and every file they reference), and their ratio.
 //
@@ -106,6 +108,13 @@ nlohmann::json branchJson(const PipelineGraph& graph, NodeId exportNode) {
     return {{"export", exportNode}, {"name", n.name}, {"nodes", graph.branchOf(exportNode)}};
 }
 
+// Original triangles of the scene per CPU second of the bake (0 when the bake took no time,
+// e.g. everything came from the cache within the clock's resolution).
+double bakeThroughput(const NodeOutput& out) {
+    const double cpu = out.bake->cpuSeconds;
+    return cpu > 0.0 ? static_cast<double>(out.scene->stats().triangles) / cpu : 0.0;
+}
+
 nlohmann::json resultJson(const PipelineGraph& graph, NodeId exportNode, const PlanCheck& plan) {
     const NodeOutput& out = *graph.output(exportNode);
     const ExportResult& ex = *out.exported;
@@ -135,8 +144,11 @@ nlohmann::json resultJson(const PipelineGraph& graph, NodeId exportNode, const P
     }
     j["seconds"] = {{"cluster", out.clusterSeconds},
                     {"bake", out.bake->seconds},
+                    {"bake_cpu", out.bake->cpuSeconds},
                     {"dlod", ex.dlodSeconds},
                     {"write", ex.writeSeconds}};
+    j["bake_triangles_per_cpu_second"] = bakeThroughput(out);
+    j["peak_bytes"] = processUsage().peakBytes;
     return j;
 }
 
@@ -161,6 +173,11 @@ void printSummary(const PipelineGraph& graph, NodeId exportNode, const PlanCheck
                 "(%zu input triangles)\n",
                 toString(bp.method), bp.screen.screenSize, bp.screen.pixelError, bake.baked,
                 bake.reused, bake.seconds, bake.inputTriangles);
+    const ProcessUsage use = processUsage();
+    std::printf("throughput:   %.0f k original triangles per CPU second of the bake (%.2f CPU s); "
+                "peak memory %.0f MB\n",
+                bakeThroughput(out) / 1e3, bake.cpuSeconds,
+                static_cast<double>(use.peakBytes) / 1e6);
     if (plan.matches) {
         std::printf("plan:         %s: all %d shards finished; baked here %zu (%zu nodes above the "
                     "cut), the rest from the shards\n",

@@ -89,8 +89,14 @@ int runCluster(const CommandArgs& argv) {
                        {"k", params.k},
                        {"max_children", params.maxChildren}};
         j["metrics"] = treeMetricsToJson(metrics);
-        j["tree"] = clusterTreeToJson(tree);
-        std::cout << j.dump(2) << "\n";
+        // "tree" is the last key (std::map order): the rest as nlohmann dumps it, then the tree
+        // streamed as text, the very bytes j["tree"] = clusterTreeToJson(tree) would give.
+        std::string text = j.dump(2);
+        text.resize(text.size() - 2); // the closing "\n}"
+        text += ",\n  \"tree\": ";
+        appendClusterTreeJson(text, tree, 1);
+        text += "\n}\n";
+        std::cout.write(text.data(), static_cast<std::streamsize>(text.size()));
         return 0;
     }
     std::printf("scene:        ");

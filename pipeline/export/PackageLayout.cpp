@@ -26,13 +26,6 @@ constexpr double kStepsPerBudget = 64.0;
 // A leaf's grid: 1/16384 of its diameter, 1/64 of the budget t * D / S at S / t = 256.
 constexpr double kLeafStepsPerDiameter = 16384.0;
 
-Aabb padded(Aabb b, double pad) {
-    if (b.empty()) return b;
-    b.min -= glm::dvec3(pad);
-    b.max += glm::dvec3(pad);
-    return b;
-}
-
 Aabb thick(Aabb b) {
     if (b.empty()) return b;
     const glm::dvec3 c = b.center();
@@ -43,6 +36,19 @@ Aabb thick(Aabb b) {
 }
 
 double maxAxis(const glm::dvec3& e) { return std::max({e.x, e.y, e.z}); }
+
+// `box` (package frame) grown by what a pad of `pad` on every axis of a frame turned by
+// `rotation` can reach: pad times the row sums of |rotation| (exactly `pad` when not turned).
+Aabb paddedTurned(Aabb b, double pad, const glm::dmat3& rotation) {
+    if (b.empty()) return b;
+    for (int r = 0; r < 3; ++r) {
+        const double reach =
+            pad * (std::abs(rotation[0][r]) + std::abs(rotation[1][r]) + std::abs(rotation[2][r]));
+        b.min[r] -= reach;
+        b.max[r] += reach;
+    }
+    return b;
+}
 
 // The proxy error made monotone: a parent's error is at least its children's (3D Tiles expects
 // geometric error to decrease toward the leaves). Leaves: 0. A root without a proxy draws
@@ -75,8 +81,12 @@ class Planner {
 public:
     Planner(const Scene& scene, const ClusterTree& tree, const BakeResult& bake)
         : scene_(scene), tree_(tree), bake_(bake), err_(monotoneErrors(tree, bake)),
-          triangles_(tree.nodes.size(), 0) {
+          triangles_(tree.nodes.size(), 0), meshCentre_(scene.meshes.size(), glm::dvec3(0.0)) {
         layout_.tileOfNode.assign(tree.nodes.size(), -1);
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+            const Aabb b = scene.meshes[m].localBounds();
+            if (!b.empty()) meshCentre_[m] = b.center();
+        }
         countTriangles(tree.root);
     }
 
@@ -131,21 +141,25 @@ private:
         t.node = n;
         t.parent = parent;
         t.geometricError = err_[n];
-        const glm::dvec3 origin = hasContent ? b.proxy.origin : tree_.nodes[n].box.center();
-        if (parent >= 0) t.frame = glm::translate(glm::dmat4(1.0), origin);
+        // A proxy's tile sits in its bake frame; the root's is the package frame, its proxy
+        // placed by the content's node instead.
+        const RigidFrame frame =
+            hasContent ? b.frame : RigidFrame{tree_.nodes[n].box.center(), glm::dmat3(1.0)};
+        if (parent >= 0) t.frame = frame.matrix();
         if (hasContent) {
             ContentPlan c;
             c.proxy = true;
             c.node = n;
-            c.proxyOffset = parent >= 0 ? glm::dvec3(0.0) : origin;
+            c.proxyOffset = parent >= 0 ? glm::dvec3(0.0) : frame.origin;
+            c.proxyRotation = parent >= 0 ? glm::dmat3(1.0) : frame.rotation;
             c.positionStep = quantizedBudget(b.errorBudget) / kStepsPerBudget;
-            Aabb box;
-            for (const glm::vec3& p : b.proxy.positions)
+            Aabb box, world;
+            for (const glm::vec3& p : b.proxy.positions) {
                 box.expand(glm::dvec3(p));
+                world.expand(frame.origin + frame.rotation * glm::dvec3(p));
+            }
             const double step = positionGridStep(maxAxis(box.extent()), c.positionStep);
-            box.min += c.proxyOffset;
-            box.max += c.proxyOffset;
-            c.bounds = padded(box, step);
+            c.worldBounds = paddedTurned(world, step, frame.rotation);
             t.content = addContent(std::move(c));
         }
         const int self = addTile(std::move(t));
@@ -166,7 +180,7 @@ private:
         }
         if (leaves.empty()) return;
         std::vector<std::vector<Id>> groups;
-        splitGroup(std::move(leaves), groups);
+        splitGroup(std::move(leaves), bake_.nodes[n].frame.rotation, groups);
         for (std::vector<Id>& g : groups)
             groupTile(std::move(g), self, n);
         // A folded node (and every inner node below it) is shown by its first leaf's group.
@@ -201,9 +215,18 @@ private:
     // The grid a leaf asks for: 1/16384 of a diameter D (see the header).
     static double leafStep(double diameter) { return diameter / kLeafStepsPerDiameter; }
 
-    // Splits a group in space (median of the leaves' centres on the longest axis) until each
-    // part holds at most kMaxGroupBytes of raw geometry. Keeps the leaves' order.
-    void splitGroup(std::vector<Id> leaves, std::vector<std::vector<Id>>& out) const {
+    // Where a leaf's geometry is: its mesh's box centre placed by the leaf's world matrix (it
+    // turns with the leaf, unlike the centre of the leaf's world box).
+    glm::dvec3 anchorOf(Id leaf) const {
+        const Id mesh = scene_.instances[tree_.nodes[leaf].instance].mesh;
+        return glm::dvec3(worldOf(leaf) * glm::dvec4(meshCentre_[mesh], 1.0));
+    }
+
+    // Splits a group in space (median of the leaves' anchors on the longest axis of a frame
+    // turned by `rotation`, so turned copies split alike) until each part holds at most
+    // kMaxGroupBytes of raw geometry. Keeps the leaves' order.
+    void splitGroup(std::vector<Id> leaves, const glm::dmat3& rotation,
+                    std::vector<std::vector<Id>>& out) const {
         std::size_t raw = 0;
         for (Id l : leaves)
             raw += rawBytes(l);
@@ -211,14 +234,18 @@ private:
             out.push_back(std::move(leaves));
             return;
         }
+        const glm::dmat3 back = glm::transpose(rotation);
+        std::vector<glm::dvec3> at;
         Aabb centres;
-        for (Id l : leaves)
-            centres.expand(tree_.nodes[l].box.center());
+        for (Id l : leaves) {
+            at.push_back(back * anchorOf(l));
+            centres.expand(at.back());
+        }
         const glm::dvec3 e = centres.extent();
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         std::vector<std::pair<double, std::size_t>> keys;
         for (std::size_t i = 0; i < leaves.size(); ++i)
-            keys.push_back({tree_.nodes[leaves[i]].box.center()[axis], i});
+            keys.push_back({at[i][axis], i});
         std::sort(keys.begin(), keys.end());
         std::vector<char> low(leaves.size(), 0);
         for (std::size_t i = 0; i < keys.size() / 2; ++i)
@@ -226,8 +253,8 @@ private:
         std::vector<Id> a, b;
         for (std::size_t i = 0; i < leaves.size(); ++i)
             (low[i] ? a : b).push_back(leaves[i]);
-        splitGroup(std::move(a), out);
-        splitGroup(std::move(b), out);
+        splitGroup(std::move(a), rotation, out);
+        splitGroup(std::move(b), rotation, out);
     }
 
     // The exact bounds of a mesh placed by `m` (every vertex transformed).
@@ -238,25 +265,36 @@ private:
         return b;
     }
 
-    // Leaves placed in a translated frame: shared meshes instanced, the rest merged.
-    void groupLeaves(const std::vector<Id>& leaves, const glm::dvec3& centre,
-                     ContentPlan& c) const {
-        std::map<Id, std::size_t> uses;
+    // The finest grid the leaves ask for (leafStep of their diameters).
+    double finestStep(const std::vector<Id>& leaves) const {
         double finest = 0.0;
         for (Id l : leaves) {
-            ++uses[scene_.instances[tree_.nodes[l].instance].mesh];
             const double s = leafStep(nodeDiameter(tree_.nodes[l]));
             finest = finest > 0.0 && finest < s ? finest : s;
         }
-        const double grid = offsetGrid(finest);
-        Aabb mergedBox;
+        return finest;
+    }
+
+    // Leaves placed in the group's frame (`frame`, at `centre` of the node frame `node`, every
+    // placement quantised in `node` on the grid of `step`): shared meshes instanced, the rest
+    // merged.
+    void groupLeaves(const std::vector<Id>& leaves, const RigidFrame& node,
+                     const glm::dvec3& centre, double step, const glm::dmat4& frame,
+                     ContentPlan& c) const {
+        std::map<Id, std::size_t> uses;
+        for (Id l : leaves)
+            ++uses[scene_.instances[tree_.nodes[l].instance].mesh];
+        const glm::dmat3 turn(frame);
+        Aabb mergedBox, mergedWorld;
         double coarsestMerged = 0.0;
         for (Id l : leaves) {
             LeafSlot s;
             s.leaf = l;
             s.instance = tree_.nodes[l].instance;
-            glm::dmat4 m = worldOf(l);
-            m[3] = glm::dvec4(quantizeOffset(glm::dvec3(m[3]) - centre, grid), 1.0);
+            const glm::dmat4& world = worldOf(l);
+            const Placement p = placeInFrame(node, glm::dmat3(world), glm::dvec3(world[3]), step);
+            glm::dmat4 m(p.linear);
+            m[3] = glm::dvec4(p.offset - centre, 1.0);
             const Mesh& mesh = meshOf(l);
             const std::size_t n = uses[scene_.instances[s.instance].mesh];
             const std::optional<Trs> trs = decomposeTrs(m);
@@ -266,34 +304,49 @@ private:
                 s.positionStep = leafStep(nodeDiameter(tree_.nodes[l]));
                 coarsestMerged = std::max(coarsestMerged, s.positionStep);
                 mergedBox.expand(placedBounds(mesh, m));
+                mergedWorld.expand(placedBounds(mesh, frame * m));
             } else {
                 s.trs = *trs;
                 const Aabb local = mesh.localBounds();
                 s.positionStep = leafStep(local.diagonal());
-                const double step = positionGridStep(maxAxis(local.extent()), s.positionStep);
+                const double grid = positionGridStep(maxAxis(local.extent()), s.positionStep);
                 const glm::dvec3 scale = glm::abs(trs->scale);
-                c.bounds.expand(
-                    padded(placedBounds(mesh, m), step * std::max({scale.x, scale.y, scale.z})));
+                c.worldBounds.expand(paddedTurned(placedBounds(mesh, frame * m),
+                                                  grid * std::max({scale.x, scale.y, scale.z}),
+                                                  turn * glm::mat3_cast(trs->rotation)));
             }
             c.leaves.push_back(s);
         }
         // Any merged primitive's grid is at most this (its extent and finest ask are bounded
         // by all merged leaves' together).
         const double pad = positionGridStep(maxAxis(mergedBox.extent()), coarsestMerged);
-        c.bounds.expand(padded(mergedBox, pad));
+        c.worldBounds.expand(paddedTurned(mergedWorld, pad, turn));
     }
 
+    // A leaf group's tile under tile `parent` (-1: the tree is one leaf) showing leaves of
+    // inner node `parentNode`.
     int groupTile(std::vector<Id> leaves, int parent, Id parentNode) {
         ContentPlan c;
         c.node = parentNode;
         TilePlan t;
         t.parent = parent;
-        Aabb box;
-        for (Id l : leaves)
-            box.expand(tree_.nodes[l].box);
-        const glm::dvec3 centre = parent < 0 ? glm::dvec3(0.0) : box.center();
-        t.frame = glm::translate(glm::dmat4(1.0), centre);
-        groupLeaves(leaves, centre, c);
+        const RigidFrame node = parentNode == kNoId ? RigidFrame{} : bake_.nodes[parentNode].frame;
+        const double step = finestStep(leaves);
+        glm::dvec3 centre(0.0);
+        if (parent >= 0) {
+            // The leaves' centre in the node's frame, on the placements' grid: offsets from it
+            // stay exact multiples of the grid, the same for turned copies.
+            const glm::dmat3 back = glm::transpose(node.rotation);
+            Aabb anchors;
+            for (Id l : leaves)
+                anchors.expand(back * (anchorOf(l) - node.origin));
+            centre = quantizeOffset(anchors.center(), offsetGrid(step));
+        }
+        const RigidFrame frame =
+            parent < 0 ? RigidFrame{}
+                       : RigidFrame{node.origin + node.rotation * centre, node.rotation};
+        t.frame = frame.matrix();
+        groupLeaves(leaves, node, centre, step, t.frame, c);
         t.content = addContent(std::move(c));
         const int self = addTile(std::move(t));
         for (Id l : leaves)
@@ -305,10 +358,8 @@ private:
     // come later in `tiles`, so they are finished first when walking backwards).
     void finishBox(TilePlan& t) const {
         Aabb box;
-        if (t.content >= 0) {
-            const Aabb local = thick(layout_.contents[static_cast<std::size_t>(t.content)].bounds);
-            box.expand(local.transformed(t.frame));
-        }
+        if (t.content >= 0)
+            box.expand(thick(layout_.contents[static_cast<std::size_t>(t.content)].worldBounds));
         if (t.node != kNoId) box.expand(tree_.nodes[t.node].box);
         for (int c : t.children)
             box.expand(layout_.tiles[static_cast<std::size_t>(c)].worldBox);
@@ -320,6 +371,7 @@ private:
     const BakeResult& bake_;
     std::vector<double> err_;
     std::vector<std::size_t> triangles_; // original triangles below each node
+    std::vector<glm::dvec3> meshCentre_; // per scene mesh: the centre of its local box
     PackageLayout layout_;
 };
 

@@ -17,14 +17,19 @@
 //   the automatic path against 243 with these merged). Every tile that remains switches where
 //   Algorithm 5 switches the node it shows.
 // - Frames: a tile's content is stored in the tile's own frame and the tile's 3D Tiles
-//   `transform` places it, so content that is the same in its own frame is the same file:
-//   proxies of rigid copies (same key: the bake's own frame, BakeFrame.h) and leaf groups that
-//   are translated copies share one GLB. A proxy's frame is its origin, a group's the centre
-//   of its box with the leaves' offsets from it rounded to a power-of-two grid below 1/1024 of
-//   the finest position step (so copies agree to the bit). Frames only translate (a turned
-//   frame would make its box an oriented one, whose axis-aligned hull inflates every box above
-//   it). The root's frame is the package frame (no transform without --geo). Content bounds
-//   are exact (every vertex placed), padded by the quantisation.
+//   `transform` (any rigid motion) places it, so content that is the same in its own frame is
+//   the same file: proxies of rigid copies (same key: the bake's own frame, BakeFrame.h) and
+//   leaf groups that are rigid copies share one GLB. A proxy's frame is its node's bake frame
+//   (NodeBake::frame: position and rotation). A group's frame has the rotation of its parent
+//   node's bake frame and sits at the centre of its leaves (their meshes' box centres, in that
+//   frame); its leaves are placed in it by their linear parts and offsets quantised as the bake
+//   quantises them (BakeFrame.h: offsets on a power-of-two grid below 1/1024 of the finest
+//   position step, linear parts column by column at 2^-32 of their length), so copies agree to
+//   the bit. The root's frame is the package frame (no transform without --geo): a root proxy
+//   in a turned frame is placed by its GLB node. Tile boxes stay axis-aligned in the package
+//   frame (a turned tile writes that box as an oriented box in its own frame), so no box is
+//   inflated by the turn of a frame below it. Content bounds are exact (every vertex placed),
+//   padded by the quantisation.
 // - Inside a group, a mesh that several of its leaves show, and that is large enough for a
 //   second copy to outweigh a glTF node, is stored once and instanced by nodes; every other
 //   leaf is merged, in the group's frame, into one primitive per material (few draw calls, no
@@ -67,7 +72,7 @@ struct LeafSlot {
     Id instance = kNoId;       // scene instance
     bool merged = false;       // merged into the group's primitive of its material (else instanced)
     Trs trs;                   // instanced: the mesh's frame in the content's frame
-    glm::dmat4 matrix{1.0};    // merged: the mesh's frame in the content's frame
+    glm::dmat4 matrix{1.0};    // merged: the mesh's frame in the content's frame (quantised)
     double positionStep = 0.0; // requested grid in the content's frame (merged) or the mesh's
 };
 
@@ -75,9 +80,11 @@ struct ContentPlan {
     bool proxy = false; // a proxy (of `node`) or a leaf group
     Id node = kNoId;    // proxy: the inner node; group: the parent of its leaves (or kNoId)
     std::vector<LeafSlot> leaves;
-    glm::dvec3 proxyOffset{0.0}; // proxy: where its positions' origin sits in the content frame
-    double positionStep = 0.0;   // proxy: requested grid (metres)
-    Aabb bounds;                 // content in its own frame, padded by the quantisation
+    glm::dvec3 proxyOffset{0.0};   // proxy: where its positions' origin sits in the content frame
+    glm::dmat3 proxyRotation{1.0}; // proxy: how its positions turn into the content frame
+    double positionStep = 0.0;     // proxy: requested grid (metres)
+    Aabb worldBounds;              // content placed by its tile, package frame, padded by the
+                                   // quantisation
 };
 
 struct TilePlan {
@@ -85,7 +92,7 @@ struct TilePlan {
     int content = -1; // index into PackageLayout::contents, -1 = no content
     int parent = -1;  // tile index, -1 for the root tile
     std::vector<int> children;
-    glm::dmat4 frame{1.0}; // the tile's (and its content's) frame: a translation
+    glm::dmat4 frame{1.0}; // the tile's (and its content's) frame: a rigid motion
     double geometricError = 0.0;
     Aabb worldBox; // everything below the tile (content and children), package frame
 };

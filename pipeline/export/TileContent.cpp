@@ -153,6 +153,7 @@ std::uint64_t contentKey(const ContentPlan& plan, const BakeResult& bake, const 
         h.addValue(proxy.vertexCount());
         h.addValue(proxy.triangleCount());
         h.addValue(plan.proxyOffset);
+        h.addValue(plan.proxyRotation);
         h.addValue(plan.positionStep);
         return h.digest();
     }
@@ -207,6 +208,7 @@ EncodedContent ContentEncoder::encodeProxy(const ContentPlan& plan) {
     GlbNode node;
     node.mesh = 0;
     node.trs.translation = plan.proxyOffset;
+    node.trs.rotation = glm::quat_cast(plan.proxyRotation);
     glb.nodes.push_back(node);
     EncodedContent out;
     out.bytes = encodeGlb(glb);

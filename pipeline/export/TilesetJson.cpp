@@ -8,8 +8,10 @@
 // frame: A x M x inverse(A) with A: (x, y, z) -> (x, -z, y). Content is glTF and Y up; the
 // runtime turns it Z up before the tile transforms apply (5.3.4), which is what A does to the
 // package frame.
-// Boxes: in the tile's frame (frames only translate): its whole box, content and children,
-// relative to its origin.
+// Boxes: in the tile's frame: its whole box, content and children (axis-aligned in the package
+// frame, PackageLayout.h), relative to its origin; in a turned frame that box is written as an
+// oriented box (the package's axes seen from the tile's frame), its numbers in full and grown
+// by far more than the double rounding of the turn (turnedBoxVolume).
 #include <algorithm>
 
 #include "pipeline/export/JsonNumbers.h"
@@ -54,9 +56,43 @@ nlohmann::json boxVolume(const Aabb& b) {
     return box;
 }
 
-Aabb localBox(const TilePlan& t) {
+// The inverse of a rigid frame: exact for a translation (the identity's transpose is itself).
+glm::dmat4 rigidInverse(const glm::dmat4& m) {
+    const glm::dmat3 back = glm::transpose(glm::dmat3(m));
+    glm::dmat4 out(back);
+    out[3] = glm::dvec4(-(back * glm::dvec3(m[3])), 1.0);
+    return out;
+}
+
+// A package-frame box seen from a turned frame, as a Z-up oriented box. Its numbers are written
+// in full (shortest round trip): rounded to 7 digits, the turned half axes would poke out of
+// the parent's box by the rounding (1e-6 of the box), more than the containment a validator
+// accepts. Grown by 1e-9 of the box and its distance from the origin, far above the double
+// rounding of turning it and far below any tolerance.
+nlohmann::json turnedBoxVolume(const Aabb& b, const glm::dmat4& frame) {
+    const glm::dmat3 back = glm::transpose(glm::dmat3(frame));
+    const glm::dmat3 zUp(kYupToZup);
+    const glm::dvec3 origin(frame[3]);
+    const glm::dvec3 c = zUp * (back * (b.center() - origin));
+    const glm::dvec3 h = b.extent() * 0.5;
+    const double grow = 1e-9 * (h.x + h.y + h.z + glm::length(b.center()) + glm::length(origin));
+    nlohmann::json box = nlohmann::json::array();
+    for (int k = 0; k < 3; ++k)
+        box.push_back(c[k] + 0.0); // no negative zeros
+    for (int a = 0; a < 3; ++a) {
+        glm::dvec3 axis(0.0);
+        axis[a] = h[a] + grow;
+        const glm::dvec3 turned = zUp * (back * axis);
+        for (int k = 0; k < 3; ++k)
+            box.push_back(turned[k] + 0.0);
+    }
+    return box;
+}
+
+nlohmann::json boundingBox(const TilePlan& t) {
+    if (glm::dmat3(t.frame) != glm::dmat3(1.0)) return turnedBoxVolume(t.worldBox, t.frame);
     const glm::dvec3 o(t.frame[3]);
-    return Aabb{t.worldBox.min - o, t.worldBox.max - o};
+    return boxVolume(Aabb{t.worldBox.min - o, t.worldBox.max - o});
 }
 
 nlohmann::json tile(const PackageLayout& layout, int index,
@@ -65,14 +101,12 @@ nlohmann::json tile(const PackageLayout& layout, int index,
     const TilePlan& t = layout.tiles[static_cast<std::size_t>(index)];
     nlohmann::json j;
     glm::dmat4 m = t.frame;
-    if (t.parent >= 0) {
-        const glm::dvec3 parentOrigin(layout.tiles[static_cast<std::size_t>(t.parent)].frame[3]);
-        m[3] -= glm::dvec4(parentOrigin, 0.0); // parents' frames are translations
-    }
+    if (t.parent >= 0)
+        m = rigidInverse(layout.tiles[static_cast<std::size_t>(t.parent)].frame) * t.frame;
     glm::dmat4 z = kYupToZup * m * glm::inverse(kYupToZup);
     if (t.parent < 0 && geo) z = enuToEcef(*geo) * z;
     if (z != glm::dmat4(1.0)) j["transform"] = matrixJson(z);
-    j["boundingVolume"] = {{"box", boxVolume(localBox(t))}};
+    j["boundingVolume"] = {{"box", boundingBox(t)}};
     j["geometricError"] = shortNumberUp(t.geometricError);
     if (t.content >= 0) j["content"] = {{"uri", contentUris[static_cast<std::size_t>(t.content)]}};
     if (!t.children.empty()) {

@@ -19,7 +19,7 @@ void appendInstance(const Scene& scene, const AggregatePart& part, const glm::dv
 
     // Double precision transform, then relative to the node origin, so far-away clusters keep
     // sub-millimetre float precision.
-    const glm::dmat3 linear(world);
+    const glm::dmat3 linear = part.linear ? *part.linear : glm::dmat3(world);
     const glm::dvec3 shift = part.offset ? *part.offset : glm::dvec3(world[3]) - origin;
     for (const glm::vec3& p : mesh.positions) {
         out.positions.push_back(glm::vec3(linear * glm::dvec3(p) + shift));
@@ -43,8 +43,9 @@ void appendProxy(const AggregatePart& part, const glm::dvec3& origin, ProxyMesh&
     const ProxyMesh& proxy = *part.proxy;
     const auto first = static_cast<std::uint32_t>(out.positions.size());
     const glm::dvec3 shift = part.offset ? *part.offset : proxy.origin - origin;
+    const glm::dmat3 linear = part.linear ? *part.linear : glm::dmat3(1.0);
     for (const glm::vec3& p : proxy.positions) {
-        out.positions.push_back(glm::vec3(glm::dvec3(p) + shift));
+        out.positions.push_back(glm::vec3(linear * glm::dvec3(p) + shift));
     }
     if (proxy.colors.size() == proxy.positions.size()) {
         out.colors.insert(out.colors.end(), proxy.colors.begin(), proxy.colors.end());
@@ -52,8 +53,12 @@ void appendProxy(const AggregatePart& part, const glm::dvec3& origin, ProxyMesh&
         out.colors.insert(out.colors.end(), proxy.positions.size(),
                           glm::u8vec4(204, 204, 204, 255));
     }
-    for (std::uint32_t i : proxy.indices)
-        out.indices.push_back(first + i);
+    const bool mirrored = glm::determinant(linear) < 0.0;
+    for (std::size_t t = 0; t + 2 < proxy.indices.size(); t += 3) {
+        out.indices.push_back(first + proxy.indices[t]);
+        out.indices.push_back(first + proxy.indices[t + (mirrored ? 2 : 1)]);
+        out.indices.push_back(first + proxy.indices[t + (mirrored ? 1 : 2)]);
+    }
     out.errorBound = std::max(out.errorBound, proxy.errorBound);
 }
 

@@ -10,21 +10,25 @@ namespace {
 
 constexpr std::uint64_t kAtlasFormatVersion = 1;
 
-// Leaves under `id`, with `at` the position of `id`'s origin in the target node's frame.
+// Leaves under `id`, with `to` the map from `id`'s frame into the target node's frame. Each
+// child is placed in `id`'s frame as the baker places it (placeInFrame, BakeFrame.h).
 void addSubtree(SourceSurfaces& out, const Scene& scene, const ClusterTree& tree, Id id,
-                const glm::dvec3& at, const std::vector<NodeBake>& nodes) {
-    const double grid = offsetGrid(nodes[id].errorBudget);
-    const glm::dvec3 origin = nodes[id].proxy.origin;
+                const Placement& to, const std::vector<NodeBake>& nodes) {
+    const NodeBake& self = nodes[id];
     for (Id c : tree.nodes[id].children) {
         const ClusterNode& child = tree.nodes[c];
         if (child.isLeaf()) {
             if (child.instance == kNoId) continue;
-            const glm::dmat4& world = scene.nodes[scene.instances[child.instance].node].world;
-            const glm::dvec3 offset = quantizeOffset(glm::dvec3(world[3]) - origin, grid);
-            out.addInstance(scene, child.instance, glm::dmat3(world), at + offset);
+            const glm::dmat4& world = scene.instanceTransform(child.instance);
+            const Placement p =
+                placeInFrame(self.frame, glm::dmat3(world), glm::dvec3(world[3]), self.errorBudget);
+            out.addInstance(scene, child.instance, to.linear * p.linear,
+                            to.linear * p.offset + to.offset);
         } else {
-            const glm::dvec3 offset = quantizeOffset(nodes[c].proxy.origin - origin, grid);
-            addSubtree(out, scene, tree, c, at + offset, nodes);
+            const Placement p = placeInFrame(self.frame, nodes[c].frame.rotation,
+                                             nodes[c].frame.origin, self.errorBudget);
+            addSubtree(out, scene, tree, c,
+                       Placement{to.linear * p.linear, to.linear * p.offset + to.offset}, nodes);
         }
     }
 }
@@ -34,7 +38,7 @@ void addSubtree(SourceSurfaces& out, const Scene& scene, const ClusterTree& tree
 SourceSurfaces gatherNodeSources(const Scene& scene, const ClusterTree& tree, Id node,
                                  const std::vector<NodeBake>& nodes) {
     SourceSurfaces out;
-    addSubtree(out, scene, tree, node, glm::dvec3(0.0), nodes);
+    addSubtree(out, scene, tree, node, Placement{}, nodes);
     return out;
 }
 

@@ -4,10 +4,10 @@
 //
 // Sources: every original instance under the node (leaves of its whole subtree, not the
 // children's proxies: sampling a proxy's atlas again would blur twice), placed in the node's
-// frame the way the baker places its inputs: a leaf by its world linear part and its
-// quantised offset from its parent's origin, each inner node's origin by its quantised offset
-// from its parent's, summed up to the node (BakeFrame.h). Translated copies of a cluster so
-// get bit-identical sources, hence bit-identical atlases under one cache key.
+// frame the way the baker places its inputs: a leaf by its quantised placement (linear part
+// and offset) in its parent's frame, each inner node's frame by its quantised placement in its
+// parent's, composed up to the node (BakeFrame.h). Rigid copies of a cluster so get
+// bit-identical sources, hence bit-identical atlases under one cache key.
 // Texel size: errorBudget / pixelError = diameter / S (one texel per pixel at the switch).
 // Keys: the atlas texels also depend on uvs, texture texels, base colour factors and alpha
 // modes, which the geometry keys leave out: leafLookHash adds them to a leaf's key and

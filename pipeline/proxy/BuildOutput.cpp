@@ -53,7 +53,14 @@ nlohmann::json nodeJson(const Scene& scene, const ClusterTree& tree, const BakeR
         return j;
     }
     j["proxy"] = b.proxy.empty() ? nlohmann::json() : nlohmann::json(proxyFile(id));
-    j["proxy_origin"] = vec3(b.proxy.origin);
+    j["proxy_origin"] = vec3(b.frame.origin);
+    if (b.frame.turned()) { // the frame's rotation, column-major (BakeFrame.h)
+        nlohmann::json r = nlohmann::json::array();
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k)
+                r.push_back(b.frame.rotation[c][k]);
+        j["proxy_rotation"] = std::move(r);
+    }
     j["proxy_triangles"] = b.proxy.triangleCount();
     j["proxy_vertices"] = b.proxy.vertexCount();
     j["input_triangles"] = b.inputTriangles;
@@ -89,9 +96,17 @@ std::uintmax_t writeContents(const std::filesystem::path& dir, const ClusterTree
         if (tree.nodes[id].isLeaf() || p.empty()) continue;
         GlbMesh m;
         m.name = "node_" + std::to_string(id);
-        m.translation = p.origin;
-        m.positions = p.positions;
-        m.normals = p.normals;
+        // The writer places a mesh by a translation: a turned frame's rotation goes into the
+        // positions and normals.
+        const RigidFrame& frame = bake.nodes[id].frame;
+        std::vector<glm::vec3> positions, normals;
+        for (const glm::vec3& v : p.positions)
+            positions.push_back(glm::vec3(frame.rotation * glm::dvec3(v)));
+        for (const glm::vec3& n : p.normals)
+            normals.push_back(glm::vec3(frame.rotation * glm::dvec3(n)));
+        m.translation = frame.origin;
+        m.positions = positions;
+        m.normals = normals;
         m.colors = p.colors;
         m.indices = p.indices;
         writeGlbFile(dir / proxyFile(id), m);

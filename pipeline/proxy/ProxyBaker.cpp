@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <memory>
 
 #include <tbb/info.h>
@@ -31,7 +32,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 10;
+constexpr std::uint64_t kBakeFormatVersion = 11;
 
 // Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
 std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {
@@ -95,8 +96,7 @@ void hashOptions(ContentHash& h, const BakeParams& params) {
     hashAtlasOptions(h, params.atlas);
 }
 
-// A node's key from its inputs' keys and quantised offsets in its frame (its inputs in order).
-// partsOf and structuralKeys must hash the same values in the same order.
+// The head of a node's key; frameInputs adds its inputs' keys and quantised placements.
 void hashNodeHead(ContentHash& h, const BakeParams& params, double errorBudget,
                   std::size_t inputs) {
     hashOptions(h, params);
@@ -117,16 +117,25 @@ void fillFrames(const Scene& scene, const ClusterTree& tree, const BakeParams& p
     const std::vector<Aabb> boxes = nodeBoxes(scene, tree, order);
     for (Id id : order) {
         NodeBake& nb = nodes[id];
-        nb.diameter = nodeDiameter(tree.nodes[id]);
+        const ClusterNode& node = tree.nodes[id];
+        nb.diameter = nodeDiameter(node);
         if (!(nb.diameter > 0.0)) nb.diameter = boxes[id].diagonal();
         nb.errorBudget = quantizedBudget(proxyErrorBudget(nb.diameter, params.screen));
         nb.switchDistance = switchDistance(nb.diameter, params.screen);
-        nb.proxy.origin = boxes[id].empty() ? glm::dvec3(0.0) : boxes[id].center();
+        if (node.isLeaf() && node.instance != kNoId) {
+            const glm::dmat4& world = scene.instanceTransform(node.instance);
+            nb.frame = {glm::dvec3(world[3]), frameRotation(glm::dmat3(world))};
+        } else {
+            // Replaced by the first placed input's frame when the node is framed (frameInputs).
+            nb.frame = {boxes[id].empty() ? glm::dvec3(0.0) : boxes[id].center(), glm::dmat3(1.0)};
+        }
+        nb.proxy.origin = nb.frame.origin;
     }
 }
 
-// Leaf keys: what a leaf contributes in its own frame (mesh, material colour and the linear
-// part of its transform; the translation enters the parent's key as a quantised offset).
+// Leaf keys: what a leaf contributes in its own frame (mesh, material colour; its linear part
+// and translation enter the parent's key as a quantised placement in the parent's frame, so a
+// turned copy of a leaf has the same key).
 void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& order,
               const BakeParams& params, std::vector<NodeBake>& nodes) {
     std::vector<std::uint8_t> used(scene.meshes.size(), 0);
@@ -150,7 +159,6 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
             const Id mat = mesh.material < scene.materials.size() ? mesh.material : 0;
             h.addValue(meshHash[inst.mesh]);
             h.addValue(scene.materials[mat].effectiveColor());
-            h.addValue(glm::dmat3(scene.nodes[inst.node].world));
             if (params.atlas.enabled) h.addValue(leafLookHash(scene, node.instance, texHash));
             // Sides and emission decide the proxy's (ProxyLook.h); hashed only when set, so
             // the keys of scenes without them are unchanged.
@@ -163,6 +171,52 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
         }
         nodes[id].key = h.digest();
     }
+}
+
+// Frames node `id` (BakeFrame.h): its frame becomes its first placed input's (a leaf with an
+// instance, or an inner node, whose frame is already set), `placements[i]` input i's placement
+// in it, and the node's key is hashed from the inputs' keys and placements in order. Empty
+// leaves are placed at the frame's origin. The one place the bake (BakeRun::partsOf) and
+// structuralKeys frame a node, so both give the same keys.
+std::uint64_t frameInputs(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                          Id id, const std::vector<Id>& inputs, std::vector<NodeBake>& nodes,
+                          std::vector<Placement>& placements) {
+    NodeBake& nb = nodes[id];
+    // An input's world linear map and position: an instance's, or an inner node's frame.
+    auto pose = [&](Id in, glm::dmat3& linear, glm::dvec3& at) {
+        const ClusterNode& node = tree.nodes[in];
+        if (node.isLeaf()) {
+            if (node.instance == kNoId) return false;
+            const glm::dmat4& world = scene.instanceTransform(node.instance);
+            linear = glm::dmat3(world);
+            at = glm::dvec3(world[3]);
+            return true;
+        }
+        linear = nodes[in].frame.rotation;
+        at = nodes[in].frame.origin;
+        return true;
+    };
+    glm::dmat3 linear(1.0);
+    glm::dvec3 at(0.0);
+    for (Id in : inputs) {
+        // The frame's origin and rotation are the first input's, so the placements of the
+        // inputs of rigid copies are the same functions of the same relative poses.
+        if (!pose(in, linear, at)) continue;
+        nb.frame = nodes[in].frame;
+        break;
+    }
+    nb.proxy.origin = nb.frame.origin;
+    ContentHash h(0x6e6f6465); // "node"
+    hashNodeHead(h, params, nb.errorBudget, inputs.size());
+    placements.assign(inputs.size(), Placement{});
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        if (pose(inputs[i], linear, at))
+            placements[i] = placeInFrame(nb.frame, linear, at, nb.errorBudget);
+        h.addValue(nodes[inputs[i]].key);
+        h.addValue(placements[i].linear);
+        h.addValue(placements[i].offset);
+    }
+    return h.digest();
 }
 
 } // namespace
@@ -233,36 +287,19 @@ struct BakeRun {
 
     // The parts in the node's quantised frame, and the node's key from the same values.
     std::vector<AggregatePart> partsOf(Id id, const std::vector<Id>& inputs) {
-        NodeBake& nb = result.nodes[id];
-        const double grid = offsetGrid(nb.errorBudget);
-        ContentHash h(0x6e6f6465); // "node"
-        hashNodeHead(h, params, nb.errorBudget, inputs.size());
+        std::vector<Placement> placements;
+        result.nodes[id].key =
+            frameInputs(scene, tree, params, id, inputs, result.nodes, placements);
         std::vector<AggregatePart> parts(inputs.size());
-        std::vector<glm::dvec3> at(inputs.size());
-        bool placed = false;
         for (std::size_t i = 0; i < inputs.size(); ++i) {
             const ClusterNode& node = tree.nodes[inputs[i]];
-            if (node.isLeaf()) {
+            if (node.isLeaf())
                 parts[i].instance = node.instance;
-                if (node.instance == kNoId) continue;
-                at[i] = glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
-            } else {
+            else
                 parts[i].proxy = &result.nodes[inputs[i]].proxy;
-                at[i] = parts[i].proxy->origin;
-            }
-            // The frame's origin is the first input's: offsets between the inputs of translated
-            // copies are then differences of the same double values, equal to the last bits,
-            // where box centres computed from float bounds differ (BakeFrame.h).
-            if (!placed) nb.proxy.origin = at[i], placed = true;
+            parts[i].linear = placements[i].linear;
+            parts[i].offset = placements[i].offset;
         }
-        for (std::size_t i = 0; i < inputs.size(); ++i) {
-            const bool empty = parts[i].proxy == nullptr && parts[i].instance == kNoId;
-            parts[i].offset =
-                quantizeOffset(empty ? glm::dvec3(0.0) : at[i] - nb.proxy.origin, grid);
-            h.addValue(result.nodes[inputs[i]].key);
-            h.addValue(*parts[i].offset);
-        }
-        nb.key = h.digest();
         return parts;
     }
 
@@ -384,6 +421,7 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
                     const BakeParams& params, const Progress& progress) {
     validateParams(params);
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock(); // process CPU time, every thread
     const int threads = params.threads > 0 ? params.threads : tbb::info::default_concurrency();
     tbb::task_arena arena(threads);
 
@@ -436,6 +474,7 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
     }
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.cpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     return result;
 }
 
@@ -479,36 +518,11 @@ std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree&
     std::vector<NodeBake> nodes(tree.nodes.size());
     fillFrames(scene, tree, params, order, nodes);
     leafKeys(scene, tree, order, params, nodes);
-    // The position a node is placed by in its parent's frame: an instance's translation, an
-    // inner node's origin (its first placed input's position), as BakeRun::partsOf sets them.
-    std::vector<glm::dvec3> at(tree.nodes.size(), glm::dvec3(0.0));
-    std::vector<char> placed(tree.nodes.size(), 0);
+    std::vector<Placement> placements;
     for (Id id : order) {
         const ClusterNode& node = tree.nodes[id];
-        if (node.isLeaf()) {
-            if (node.instance == kNoId) continue;
-            at[id] = glm::dvec3(scene.nodes[scene.instances[node.instance].node].world[3]);
-            placed[id] = 1;
-            continue;
-        }
-        NodeBake& nb = nodes[id];
-        glm::dvec3 origin = nb.proxy.origin;
-        for (Id c : node.children) {
-            if (placed[c]) {
-                origin = at[c];
-                break;
-            }
-        }
-        const double grid = offsetGrid(nb.errorBudget);
-        ContentHash h(0x6e6f6465); // "node"
-        hashNodeHead(h, params, nb.errorBudget, node.children.size());
-        for (Id c : node.children) {
-            h.addValue(nodes[c].key);
-            h.addValue(quantizeOffset(placed[c] ? at[c] - origin : glm::dvec3(0.0), grid));
-        }
-        nb.key = h.digest();
-        at[id] = origin;
-        placed[id] = 1; // an inner input always has a proxy (and an origin) in partsOf
+        if (!node.isLeaf())
+            nodes[id].key = frameInputs(scene, tree, params, id, node.children, nodes, placements);
     }
     std::vector<std::uint64_t> keys(tree.nodes.size(), 0);
     for (Id id : order)

@@ -13,11 +13,12 @@
 // is always refined. bakeProxies records the decisions (NodeBake::dissolved) on the input tree;
 // compactDissolved (ProxyEconomy.h) removes the dissolved nodes.
 //
-// Frames: a node's proxy is baked in the node's own frame (positions relative to its first
-// input's position, every input placed by its offset from there, quantised to a power-of-two
-// grid below 1/1024 of the budget) and keyed by that content, so clusters that are translated
-// copies of each other (a plant built from repeated modules) bake to bit-identical proxies:
-// the second is a cache hit, also within one run without a disk cache.
+// Frames: a node's proxy is baked in the node's own frame (the position and rotation of its
+// first input, every input placed by its linear part and offset relative to that frame, both
+// quantised, BakeFrame.h) and keyed by that content, so clusters that are rigid copies of each
+// other (a plant built from repeated modules, translated and turned) bake to bit-identical
+// proxies: the second is a cache hit, also within one run without a disk cache. The proxy is
+// placed in the world by NodeBake::frame (proxy.origin is frame.origin).
 //
 // Scheduling: a dependency-counting task graph on TBB (a node's task is spawned by the last of
 // its inner children to finish, leaves are ready at once), run in a task_arena of
@@ -45,6 +46,7 @@
 
 #include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/core/Progress.h"
+#include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/DecimateProxy.h"
 #include "pipeline/proxy/ErrorBudget.h"
 #include "pipeline/proxy/ProxyMesh.h"
@@ -71,10 +73,13 @@ struct BakeParams {
 };
 
 struct NodeBake {
-    double diameter = 0.0;          // metres (ErrorBudget.h nodeDiameter)
-    double errorBudget = 0.0;       // e = t * diameter / S, metres
-    double switchDistance = 0.0;    // metres
-    std::uint64_t key = 0;          // cache key (leaves: key of their mesh, material, rotation)
+    double diameter = 0.0;       // metres (ErrorBudget.h nodeDiameter)
+    double errorBudget = 0.0;    // e = t * diameter / S, metres
+    double switchDistance = 0.0; // metres
+    std::uint64_t key = 0;       // cache key (leaves: key of their mesh and material)
+    // Inner nodes: the frame the proxy lives in (world = frame.matrix() * proxy position);
+    // leaves: their instance's translation and frameRotation of its linear part.
+    RigidFrame frame;
     bool reused = false;            // inner nodes: taken from the cache (or this run)
     bool dissolved = false;         // inner nodes: the proxy did not pay (see above)
     bool hasProxy = true;           // inner nodes: false for a root whose proxy did not pay
@@ -93,6 +98,7 @@ struct BakeResult {
     std::size_t proxyTriangles = 0; // sum over the kept proxies
     std::size_t proxyVertices = 0;
     double seconds = 0.0;
+    double cpuSeconds = 0.0; // CPU time of the whole process during the bake (all threads)
 };
 
 // Bakes every inner node of `tree` and makes the economy's decisions; result.nodes is parallel
@@ -113,8 +119,8 @@ BakeResult bakeSubtrees(const Scene& scene, const ClusterTree& tree, const std::
 
 // Per node (parallel to tree.nodes, 0 for nodes not under the root), the key bakeProxies gives
 // it when no node below it is dissolved. Equal keys mark subtrees that bake to the same proxies
-// (translated copies of a cluster): a shard plan keeps them in one shard, where only the first
-// is baked. Reads the meshes of every leaf.
+// (rigid copies of a cluster): a shard plan keeps them in one shard, where only the first is
+// baked. Reads the meshes of every leaf.
 std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree& tree,
                                           const BakeParams& params);
 

@@ -369,7 +369,9 @@ void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& o) {
                 } else {
                     const ProxyMesh& proxy = c.build->bake->nodes[n].proxy;
                     tris[n] = proxy.triangleCount();
-                    if (tris[n] > 0) c.nodeDrawable[n] = renderer.addProxy(c.layer, proxy);
+                    if (tris[n] > 0)
+                        c.nodeDrawable[n] = renderer.addProxy(
+                            c.layer, proxy, c.build->bake->nodes[n].frame.matrix());
                 }
             }
             c.selection = std::make_unique<SelectionTree>(tree, std::move(tris),

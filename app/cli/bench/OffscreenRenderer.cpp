@@ -271,7 +271,7 @@ int OffscreenRenderer::addMesh(int layer, const Mesh& mesh, const glm::dmat4& wo
     return static_cast<int>(list.size()) - 1;
 }
 
-int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
+int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy, const glm::dmat4& frame) {
     const bool colour = impl_->shading != Shading::Geometry;
     const bool atlas = impl_->shading == Shading::Textured && proxy.hasAtlas();
     // With an atlas the texture carries the whole base colour (ProxyMesh.h).
@@ -290,7 +290,7 @@ int OffscreenRenderer::addProxy(int layer, const ProxyMesh& proxy) {
         look.emissiveMean = meanColor(proxy.colors);
     }
     impl_->applyLook(*actor, look, atlas);
-    actor->SetPosition(proxy.origin.x, proxy.origin.y, proxy.origin.z);
+    actor->SetUserMatrix(toVtk(frame));
     impl_->layers[static_cast<std::size_t>(layer)]->AddActor(actor);
     auto& list = impl_->actors[static_cast<std::size_t>(layer)];
     list.push_back(actor);

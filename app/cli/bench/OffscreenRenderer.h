@@ -59,9 +59,9 @@ public:
     int addMesh(int layer, const Mesh& mesh, const glm::dmat4& world, const glm::vec4& color,
                 const SurfaceLook& look = {});
     // A proxy: its vertex colours in Colour shading; its baked atlas in Textured shading
-    // (vertex colours when it has none); its sidedness and emission (ProxyMesh.h) in both.
-    // The atlas image must outlive the renderer.
-    int addProxy(int layer, const ProxyMesh& proxy);
+    // (vertex colours when it has none); its sidedness and emission (ProxyMesh.h) in both;
+    // placed by its node's frame (NodeBake::frame). The atlas image must outlive the renderer.
+    int addProxy(int layer, const ProxyMesh& proxy, const glm::dmat4& frame);
 
     // Makes exactly `drawables` of `layer` visible (indices returned by add*).
     void setVisible(int layer, const std::vector<int>& drawables);

@@ -38,6 +38,26 @@ TEST(ClusterJson, WritesEveryNodeWithItsFields) {
     EXPECT_FALSE(leaf["locked"].get<bool>());
 }
 
+TEST(ClusterJson, StreamedTextIsTheBytesNlohmannDumpsAtAnyDepth) {
+    // Round and non-round coordinates (1.0 is written "1.0", 3e-06 in exponent form), a locked
+    // node, an empty tree: every case of the writer against nlohmann's own dump(2).
+    ClusterParams p;
+    ClusterTree odd = buildClusterTree(
+        test::cubesAt({{0.1, -0.2, 3e-6}, {1.25, 0, 7}, {-50.5, 1e9, 0}, {2, 2, 2}}), p);
+    odd.nodes[odd.root].locked = true;
+    for (const ClusterTree& t : {threeCubes(), odd, ClusterTree{}}) {
+        std::string alone;
+        appendClusterTreeJson(alone, t);
+        EXPECT_EQ(alone, clusterTreeToJson(t).dump(2));
+        // Nested one level down, as `hlod cluster --json` writes it under "tree".
+        const nlohmann::json outer = {{"tree", clusterTreeToJson(t)}};
+        std::string nested = "{\n  \"tree\": ";
+        appendClusterTreeJson(nested, t, 1);
+        nested += "\n}";
+        EXPECT_EQ(nested, outer.dump(2));
+    }
+}
+
 TEST(ClusterJson, MetricsHaveNamedFields) {
     const nlohmann::json m = treeMetricsToJson(computeTreeMetrics(threeCubes()));
     EXPECT_EQ(m["leaves"], 3);
