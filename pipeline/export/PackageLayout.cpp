@@ -292,7 +292,8 @@ private:
             s.leaf = l;
             s.instance = tree_.nodes[l].instance;
             const glm::dmat4& world = worldOf(l);
-            const Placement p = placeInFrame(node, glm::dmat3(world), glm::dvec3(world[3]), step);
+            const PartPlacement p =
+                placeInFrame(node, glm::dmat3(world), glm::dvec3(world[3]), step);
             glm::dmat4 m(p.linear);
             m[3] = glm::dvec4(p.offset - centre, 1.0);
             const Mesh& mesh = meshOf(l);

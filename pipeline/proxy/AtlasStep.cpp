@@ -13,22 +13,23 @@ constexpr std::uint64_t kAtlasFormatVersion = 1;
 // Leaves under `id`, with `to` the map from `id`'s frame into the target node's frame. Each
 // child is placed in `id`'s frame as the baker places it (placeInFrame, BakeFrame.h).
 void addSubtree(SourceSurfaces& out, const Scene& scene, const ClusterTree& tree, Id id,
-                const Placement& to, const std::vector<NodeBake>& nodes) {
+                const PartPlacement& to, const std::vector<NodeBake>& nodes) {
     const NodeBake& self = nodes[id];
     for (Id c : tree.nodes[id].children) {
         const ClusterNode& child = tree.nodes[c];
         if (child.isLeaf()) {
             if (child.instance == kNoId) continue;
             const glm::dmat4& world = scene.instanceTransform(child.instance);
-            const Placement p =
+            const PartPlacement p =
                 placeInFrame(self.frame, glm::dmat3(world), glm::dvec3(world[3]), self.errorBudget);
             out.addInstance(scene, child.instance, to.linear * p.linear,
                             to.linear * p.offset + to.offset);
         } else {
-            const Placement p = placeInFrame(self.frame, nodes[c].frame.rotation,
-                                             nodes[c].frame.origin, self.errorBudget);
+            const PartPlacement p = placeInFrame(self.frame, nodes[c].frame.rotation,
+                                                 nodes[c].frame.origin, self.errorBudget);
             addSubtree(out, scene, tree, c,
-                       Placement{to.linear * p.linear, to.linear * p.offset + to.offset}, nodes);
+                       PartPlacement{to.linear * p.linear, to.linear * p.offset + to.offset},
+                       nodes);
         }
     }
 }
@@ -38,7 +39,7 @@ void addSubtree(SourceSurfaces& out, const Scene& scene, const ClusterTree& tree
 SourceSurfaces gatherNodeSources(const Scene& scene, const ClusterTree& tree, Id node,
                                  const std::vector<NodeBake>& nodes) {
     SourceSurfaces out;
-    addSubtree(out, scene, tree, node, Placement{}, nodes);
+    addSubtree(out, scene, tree, node, PartPlacement{}, nodes);
     return out;
 }
 

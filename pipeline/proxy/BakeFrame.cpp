@@ -85,14 +85,14 @@ glm::dmat3 quantizeLinear(const glm::dmat3& linear) {
     return out;
 }
 
-Placement placeInFrame(const RigidFrame& frame, const glm::dmat3& linear, const glm::dvec3& at,
-                       double budget) {
+PartPlacement placeInFrame(const RigidFrame& frame, const glm::dmat3& linear, const glm::dvec3& at,
+                           double budget) {
     const glm::dmat3 back = glm::transpose(frame.rotation);
     return {quantizeLinear(back * linear),
             quantizeOffset(back * (at - frame.origin), offsetGrid(budget))};
 }
 
-double placementError(const Placement& placement, double reach, double budget) {
+double placementError(const PartPlacement& placement, double reach, double budget) {
     // Each column moved by at most sqrt(3)/2 of its grid, the grid at most 2^-31 of the length
     // (2^-32 of a length rounded up by at most one part in 2^32, then down to a power of two).
     double columns = 0.0;

@@ -56,7 +56,7 @@ glm::dmat3 frameRotation(const glm::dmat3& linear);
 glm::dmat3 quantizeLinear(const glm::dmat3& linear);
 
 // Placement of a part in a node's frame: its linear part and offset as the frame stores them.
-struct Placement {
+struct PartPlacement {
     glm::dmat3 linear{1.0};
     glm::dvec3 offset{0.0};
 };
@@ -64,11 +64,11 @@ struct Placement {
 // Where a part with world linear map `linear` and world position `at` sits in `frame`,
 // quantised for a node of error budget `budget`: quantizeLinear(R^T linear) and
 // quantizeOffset(R^T (at - origin), offsetGrid(budget)).
-Placement placeInFrame(const RigidFrame& frame, const glm::dmat3& linear, const glm::dvec3& at,
-                       double budget);
+PartPlacement placeInFrame(const RigidFrame& frame, const glm::dmat3& linear, const glm::dvec3& at,
+                           double budget);
 
 // The most placeInFrame's rounding can move a point of the part that lies within `reach`
 // (metres, in the part's own frame, measured from its origin) of the part's origin.
-double placementError(const Placement& placement, double reach, double budget);
+double placementError(const PartPlacement& placement, double reach, double budget);
 
 } // namespace hlod

@@ -180,7 +180,7 @@ void leafKeys(const Scene& scene, const ClusterTree& tree, const std::vector<Id>
 // structuralKeys frame a node, so both give the same keys.
 std::uint64_t frameInputs(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
                           Id id, const std::vector<Id>& inputs, std::vector<NodeBake>& nodes,
-                          std::vector<Placement>& placements) {
+                          std::vector<PartPlacement>& placements) {
     NodeBake& nb = nodes[id];
     // An input's world linear map and position: an instance's, or an inner node's frame.
     auto pose = [&](Id in, glm::dmat3& linear, glm::dvec3& at) {
@@ -208,7 +208,7 @@ std::uint64_t frameInputs(const Scene& scene, const ClusterTree& tree, const Bak
     nb.proxy.origin = nb.frame.origin;
     ContentHash h(0x6e6f6465); // "node"
     hashNodeHead(h, params, nb.errorBudget, inputs.size());
-    placements.assign(inputs.size(), Placement{});
+    placements.assign(inputs.size(), PartPlacement{});
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         if (pose(inputs[i], linear, at))
             placements[i] = placeInFrame(nb.frame, linear, at, nb.errorBudget);
@@ -287,7 +287,7 @@ struct BakeRun {
 
     // The parts in the node's quantised frame, and the node's key from the same values.
     std::vector<AggregatePart> partsOf(Id id, const std::vector<Id>& inputs) {
-        std::vector<Placement> placements;
+        std::vector<PartPlacement> placements;
         result.nodes[id].key =
             frameInputs(scene, tree, params, id, inputs, result.nodes, placements);
         std::vector<AggregatePart> parts(inputs.size());
@@ -518,7 +518,7 @@ std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree&
     std::vector<NodeBake> nodes(tree.nodes.size());
     fillFrames(scene, tree, params, order, nodes);
     leafKeys(scene, tree, order, params, nodes);
-    std::vector<Placement> placements;
+    std::vector<PartPlacement> placements;
     for (Id id : order) {
         const ClusterNode& node = tree.nodes[id];
         if (!node.isLeaf())
