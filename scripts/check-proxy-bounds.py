@@ -5,9 +5,9 @@ Every proxy of a package built with `--compression none` must lie within its nod
 (hlod.json nodes[i].errorBudget, scene units) of the original triangles under that node. This
 script checks that from the files alone, in plain Python (no code shared with the C++ pipeline):
 it reads the source glTF/GLB, places every leaf's primitive by the source's node hierarchy, reads
-each proxy tile's GLB, places it by the tile's translation, and measures the distance of every
-proxy vertex, edge midpoint and triangle centroid to the nearest original triangle of the node's
-leaves (a uniform grid narrows the candidates; the distance itself is exact).
+each proxy tile's GLB, places it by the tile's matrix or translation, and measures the distance
+of every proxy vertex, edge midpoint and triangle centroid to the nearest original triangle of
+the node's leaves (a uniform grid narrows the candidates; the distance itself is exact).
 
 Usage: scripts/check-proxy-bounds.py PACKAGE_DIR [SOURCE.glb] [--slack 1e-4]
 Exit status 0 when every point is within budget·(1+slack) (float32 storage of positions), 1 when
@@ -292,15 +292,21 @@ def main(argv):
             continue
         glb = os.path.join(package, manifest["files"][tile["file"]])
         pdoc, pbuf = read_gltf(glb)
-        offset = tile.get("translation", [0, 0, 0])
+        # The tile's placement in the scene frame: a column-major matrix (copies turned and
+        # moved) or a translation.
+        if "matrix" in tile:
+            c = tile["matrix"]
+            placed = [[c[col * 4 + row] for col in range(4)] for row in range(4)]
+        else:
+            offset = tile.get("translation", [0, 0, 0])
+            placed = [[1, 0, 0, offset[0]], [0, 1, 0, offset[1]], [0, 0, 1, offset[2]],
+                      [0, 0, 0, 1]]
         proxy = []
         for gi, gnode in world_matrices(pdoc).items():
             n = pdoc["nodes"][gi]
             if "mesh" not in n or pdoc["meshes"][n["mesh"]].get("name") != "proxy":
                 continue
-            m = [row[:] for row in gnode]
-            for i in range(3):
-                m[i][3] += offset[i]
+            m = mat_mul(placed, gnode)
             for prim in pdoc["meshes"][n["mesh"]]["primitives"]:
                 proxy.extend(primitive_triangles(pdoc, pbuf, prim, m, glb))
         if not proxy:
