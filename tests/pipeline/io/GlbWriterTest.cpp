@@ -204,7 +204,8 @@ TEST(GlbWriter, MaterialLooksAreWrittenAsGiven) {
     GlbScene s = t.scene(GlbCompression::None, true);
     // Mesh 0: a cut-out at 0.3, two-sided, emitting through its own image (a proxy atlas).
     s.meshes[0].uvs = t.uvs;
-    s.meshes[0].image = std::vector<std::uint8_t>{1, 2, 3, 4}; // bytes only: not decoded here
+    const std::vector<std::uint8_t> bytes{1, 2, 3, 4}; // bytes only: not decoded here
+    s.meshes[0].image = bytes;                         // a view: the bytes outlive the encoding
     s.meshes[0].imageMimeType = "image/png";
     s.meshes[0].alphaMode = AlphaMode::Mask;
     s.meshes[0].alphaCutoff = 0.3f;
