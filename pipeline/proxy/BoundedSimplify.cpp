@@ -64,6 +64,22 @@ BoundedSimplifyResult checkAndPatch(std::span<const glm::vec3> positions,
     return out;
 }
 
+// The input unchanged when there is nothing to do, else `simplify`'s result checked and patched.
+template <typename Simplify>
+BoundedSimplifyResult run(std::span<const glm::vec3> positions,
+                          std::span<const std::uint32_t> indices, double maxError,
+                          BoundedSimplifyStats* stats, Simplify&& simplify) {
+    BoundedSimplifyStats local;
+    BoundedSimplifyStats& st = stats ? *stats : local;
+    st = BoundedSimplifyStats{};
+    if (indices.empty() || !(maxError > 0.0)) {
+        st.unchanged = true;
+        return BoundedSimplifyResult{
+            {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
+    }
+    return checkAndPatch(positions, indices, maxError, simplify(), st);
+}
+
 } // namespace
 
 BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positions,
@@ -71,18 +87,10 @@ BoundedSimplifyResult simplifyWithinDeviation(std::span<const glm::vec3> positio
                                               double maxError,
                                               const BoundedSimplifyOptions& options,
                                               BoundedSimplifyStats* stats) {
-    BoundedSimplifyStats local;
-    BoundedSimplifyStats& st = stats ? *stats : local;
-    st = BoundedSimplifyStats{};
-    if (indices.empty() || !(maxError > 0.0)) {
-        st.unchanged = true;
-        return BoundedSimplifyResult{
-            {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
-    }
-    return checkAndPatch(
-        positions, indices, maxError,
-        simplifyWithQuadrics(positions, indices, {}, options.targetFraction * maxError, maxError),
-        st);
+    return run(positions, indices, maxError, stats, [&] {
+        return simplifyWithQuadrics(positions, indices, {}, options.targetFraction * maxError,
+                                    maxError);
+    });
 }
 
 BoundedSimplifyResult simplifyWithinDeviationFrom(std::span<const glm::vec3> positions,
@@ -90,18 +98,10 @@ BoundedSimplifyResult simplifyWithinDeviationFrom(std::span<const glm::vec3> pos
                                                   const QuadricStart& start, double maxError,
                                                   const BoundedSimplifyOptions& options,
                                                   BoundedSimplifyStats* stats) {
-    BoundedSimplifyStats local;
-    BoundedSimplifyStats& st = stats ? *stats : local;
-    st = BoundedSimplifyStats{};
-    if (indices.empty() || !(maxError > 0.0)) {
-        st.unchanged = true;
-        return BoundedSimplifyResult{
-            {indices.begin(), indices.end()}, {positions.begin(), positions.end()}, {}};
-    }
-    return checkAndPatch(positions, indices, maxError,
-                         simplifyWithQuadricsFrom(positions, indices, start,
-                                                  options.targetFraction * maxError, maxError),
-                         st);
+    return run(positions, indices, maxError, stats, [&] {
+        return simplifyWithQuadricsFrom(positions, indices, start,
+                                        options.targetFraction * maxError, maxError);
+    });
 }
 
 } // namespace hlod

@@ -8,6 +8,7 @@
 #include <queue>
 #include <tuple>
 
+#include "pipeline/proxy/LinkCondition.h"
 #include "pipeline/proxy/MappingBound.h"
 #include "pipeline/proxy/Quadric.h"
 
@@ -296,19 +297,7 @@ private:
             for (int k = 0; k < 3; ++k)
                 if (t[k] != u && t[k] != v) opposite_.push_back(t[k]);
         }
-        std::size_t i = 0, j = 0;
-        while (i < nu_.size() && j < nv_.size()) {
-            if (nu_[i] < nv_[j]) {
-                ++i;
-            } else if (nv_[j] < nu_[i]) {
-                ++j;
-            } else {
-                if (std::find(opposite_.begin(), opposite_.end(), nu_[i]) == opposite_.end())
-                    return false;
-                ++i, ++j;
-            }
-        }
-        return true;
+        return hlod::linkConditionHolds(nu_, nv_, opposite_);
     }
 
     // Tests and, when every test passes, makes the collapse.

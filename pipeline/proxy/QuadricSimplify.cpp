@@ -8,6 +8,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "pipeline/proxy/LinkCondition.h"
 #include "pipeline/proxy/Quadric.h"
 #include "pipeline/proxy/SurfaceQuery.h"
 
@@ -411,19 +412,7 @@ private:
             for (int k = 0; k < 3; ++k)
                 if (c[k] != u && c[k] != v) opposite_.push_back(c[k]);
         }
-        std::size_t i = 0, j = 0;
-        while (i < nu_.size() && j < nv_.size()) {
-            if (nu_[i] < nv_[j]) {
-                ++i;
-            } else if (nv_[j] < nu_[i]) {
-                ++j;
-            } else {
-                if (std::find(opposite_.begin(), opposite_.end(), nu_[i]) == opposite_.end())
-                    return false;
-                ++i, ++j;
-            }
-        }
-        return true;
+        return hlod::linkConditionHolds(nu_, nv_, opposite_);
     }
 
     // Calls visit(slot, corners after) for every face around c.from and c.to that survives
