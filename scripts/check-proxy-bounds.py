@@ -146,53 +146,52 @@ def point_segment_distance(p, a, b):
     ab, ap = sub(b, a), sub(p, a)
     length2 = dot(ab, ab)
     t = 0.0 if length2 == 0 else max(0.0, min(1.0, dot(ap, ab) / length2))
-    d = sub(p, (a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]))
+    d = sub(p, lerp(a, b, t))
     return math.sqrt(dot(d, d))
 
 
-def point_triangle_distance(p, a, b, c):
-    """Exact Euclidean distance (Ericson, Real-Time Collision Detection, 5.1.5); a degenerate
-    triangle is its edges."""
+def lerp(a, b, t):
+    return (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]))
+
+
+def closest_on_triangle(p, a, b, c):
+    """The point of triangle abc nearest p (Ericson, Real-Time Collision Detection, 5.1.5):
+    a corner, a point on an edge, or the projection onto the face."""
     ab, ac, ap = sub(b, a), sub(c, a), sub(p, a)
+    d1, d2 = dot(ab, ap), dot(ac, ap)
+    if d1 <= 0 and d2 <= 0:
+        return a
+    bp = sub(p, b)
+    d3, d4 = dot(ab, bp), dot(ac, bp)
+    if d3 >= 0 and d4 <= d3:
+        return b
+    vc = d1 * d4 - d3 * d2
+    if vc <= 0 and d1 >= 0 and d3 <= 0:
+        return lerp(a, b, d1 / (d1 - d3))
+    cp = sub(p, c)
+    d5, d6 = dot(ab, cp), dot(ac, cp)
+    if d6 >= 0 and d5 <= d6:
+        return c
+    vb = d5 * d2 - d1 * d6
+    if vb <= 0 and d2 >= 0 and d6 <= 0:
+        return lerp(a, c, d2 / (d2 - d6))
+    va = d3 * d6 - d5 * d4
+    if va <= 0 and (d4 - d3) >= 0 and (d5 - d6) >= 0:
+        return lerp(b, c, (d4 - d3) / ((d4 - d3) + (d5 - d6)))
+    denom = 1.0 / (va + vb + vc)
+    v, w = vb * denom, vc * denom
+    return (a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
+            a[2] + ab[2] * v + ac[2] * w)
+
+
+def point_triangle_distance(p, a, b, c):
+    """Exact Euclidean distance; a degenerate triangle is its edges."""
+    ab, ac = sub(b, a), sub(c, a)
     n = (ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0])
     if dot(n, n) <= 1e-30 * max(dot(ab, ab), dot(ac, ac)) ** 2:
         return min(point_segment_distance(p, a, b), point_segment_distance(p, b, c),
                    point_segment_distance(p, c, a))
-    d1, d2 = dot(ab, ap), dot(ac, ap)
-    if d1 <= 0 and d2 <= 0:
-        q = a
-    else:
-        bp = sub(p, b)
-        d3, d4 = dot(ab, bp), dot(ac, bp)
-        if d3 >= 0 and d4 <= d3:
-            q = b
-        else:
-            vc = d1 * d4 - d3 * d2
-            if vc <= 0 and d1 >= 0 and d3 <= 0:
-                v = d1 / (d1 - d3)
-                q = (a[0] + v * ab[0], a[1] + v * ab[1], a[2] + v * ab[2])
-            else:
-                cp = sub(p, c)
-                d5, d6 = dot(ab, cp), dot(ac, cp)
-                if d6 >= 0 and d5 <= d6:
-                    q = c
-                else:
-                    vb = d5 * d2 - d1 * d6
-                    if vb <= 0 and d2 >= 0 and d6 <= 0:
-                        w = d2 / (d2 - d6)
-                        q = (a[0] + w * ac[0], a[1] + w * ac[1], a[2] + w * ac[2])
-                    else:
-                        va = d3 * d6 - d5 * d4
-                        if va <= 0 and (d4 - d3) >= 0 and (d5 - d6) >= 0:
-                            w = (d4 - d3) / ((d4 - d3) + (d5 - d6))
-                            q = (b[0] + w * (c[0] - b[0]), b[1] + w * (c[1] - b[1]),
-                                 b[2] + w * (c[2] - b[2]))
-                        else:
-                            denom = 1.0 / (va + vb + vc)
-                            v, w = vb * denom, vc * denom
-                            q = (a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
-                                 a[2] + ab[2] * v + ac[2] * w)
-    d = sub(p, q)
+    d = sub(p, closest_on_triangle(p, a, b, c))
     return math.sqrt(dot(d, d))
 
 
@@ -285,7 +284,7 @@ def main(argv):
         leaf_cache[leaf] = tris
         return tris
 
-    checked, outside = 0, []
+    checked, tiles, outside = 0, 0, []
     for tile in manifest["tiles"]:
         node = tile.get("node")
         if tile["file"] < 0 or node is None or not nodes[node]["children"]:
@@ -311,6 +310,7 @@ def main(argv):
                 proxy.extend(primitive_triangles(pdoc, pbuf, prim, m, glb))
         if not proxy:
             continue
+        tiles += 1
         budget = nodes[node]["errorBudget"]
         originals = [t for leaf in leaves_under(nodes, node) for t in leaf_triangles(leaf)]
         grid = Grid(originals, max(budget, 1e-9) * 2)
@@ -327,8 +327,8 @@ def main(argv):
                 far = grid.nearest_within(p, budget * 8)
                 outside.append((far / budget, node, nodes[node].get("level"), p, budget))
     outside.sort(reverse=True)
-    print(f"{checked} points of {sum(1 for t in manifest['tiles'] if t.get('node') is not None)} "
-          f"proxy tiles checked; {len(outside)} outside their node's budget")
+    print(f"{checked} points of {tiles} proxy tiles checked; {len(outside)} outside their node's "
+          "budget")
     for ratio, node, level, p, budget in outside[:20]:
         ratio_text = f"{ratio:.4f}x" if math.isfinite(ratio) else "> 8x"
         print(f"  node {node} (level {level}): {ratio_text} the budget {budget:g} at "

@@ -120,8 +120,8 @@ std::vector<CommandSpec> makeCommands() {
            "Also write every frame of every configuration as frames/NNNNN-KEY.png and its "
            "camera as frames/NNNNN-camera.json.",
            ""}},
-          {"level_growth", "screen_size", "proxy_ratio", "proxy_textures", "threads", "cache",
-           "cache_dir"}});
+         {"level_growth", "screen_size", "proxy_ratio", "proxy_textures", "threads", "cache",
+          "cache_dir"}});
     return v;
 }
 

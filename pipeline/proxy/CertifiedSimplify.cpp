@@ -8,7 +8,7 @@
 #include <queue>
 #include <tuple>
 
-#include "pipeline/proxy/LinkCondition.h"
+#include "pipeline/proxy/CollapseTopology.h"
 #include "pipeline/proxy/MappingBound.h"
 #include "pipeline/proxy/Quadric.h"
 
@@ -77,12 +77,7 @@ public:
             if (tris_[3 * f] == kDead) continue;
             out.indices.insert(out.indices.end(), &tris_[3 * f], &tris_[3 * f] + 3);
         }
-        for (std::uint32_t v = 0; v < rep_.size(); ++v) {
-            std::uint32_t r = v;
-            while (rep_[r] != r)
-                r = rep_[r];
-            rep_[v] = r; // later chains through v end at once
-        }
+        resolveRepresentatives(rep_);
         out.positions = std::move(pos_);
         out.vertexBounds = std::move(bound_);
         out.representative = std::move(rep_);

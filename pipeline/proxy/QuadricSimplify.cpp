@@ -8,7 +8,7 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "pipeline/proxy/LinkCondition.h"
+#include "pipeline/proxy/CollapseTopology.h"
 #include "pipeline/proxy/Quadric.h"
 #include "pipeline/proxy/SurfaceQuery.h"
 
@@ -140,12 +140,7 @@ public:
         compact();
         QuadricSimplifyResult out;
         out.indices = std::move(tris_);
-        for (std::uint32_t v = 0; v < rep_.size(); ++v) {
-            std::uint32_t r = v;
-            while (rep_[r] != r)
-                r = rep_[r];
-            rep_[v] = r; // later chains through v end at once
-        }
+        resolveRepresentatives(rep_);
         out.representative = std::move(rep_);
         out.positions = std::move(pos_);
         return out;

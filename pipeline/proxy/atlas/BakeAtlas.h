@@ -22,9 +22,9 @@
 namespace hlod {
 
 struct AtlasOptions {
-    bool enabled = true;      // false: vertex colours only (`--proxy-textures off`)
-    int maxSize = 2048;       // atlas side cap, texels (power of two)
-    int padding = 2;          // gutter texels around every chart
+    bool enabled = true; // false: vertex colours only (`--proxy-textures off`)
+    int maxSize = 2048;  // atlas side cap, texels (power of two)
+    int padding = 2;     // gutter texels around every chart
     int jpegQuality = 90;
     float maxNormalDegrees = 60.0f; // chart normal cone (Charts.h)
     // Sources without any texture: keep the vertex colours (they already carry factor x
