@@ -12,15 +12,17 @@
 
 #include <nlohmann/json.hpp>
 #include <set>
-#include <stb_image.h>
 
 #include "../TilesetRules.h"
 #include "RunCli.h"
+#include "TestFiles.h"
 #include "pipeline/eval/ImageError.h"
 
 namespace fs = std::filesystem;
+using hlod::test::readPng;
 using hlod::test::runCli;
 using hlod::test::runProcess;
+using hlod::test::webScript;
 
 namespace {
 
@@ -30,10 +32,6 @@ struct TempDir {
     TempDir() { fs::create_directories(path); }
     ~TempDir() { fs::remove_all(path); }
 };
-
-std::string webScript(const char* name) {
-    return std::string(HLOD_TEST_SOURCE_DIR) + "/web/" + name;
-}
 
 void buildValidateRender(const std::vector<std::string>& scene, int expectedTriangles) {
     TempDir tmp;
@@ -216,22 +214,6 @@ TEST_P(ScenePackage, PlainPackageValidates) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedScenes, ScenePackage, ::testing::ValuesIn(kScenes), sceneName);
-
-namespace {
-
-hlod::RgbImage readPng(const fs::path& file) {
-    int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load(file.string().c_str(), &w, &h, &n, 3);
-    hlod::RgbImage img;
-    if (!data) return img;
-    img.width = w;
-    img.height = h;
-    img.pixels.assign(data, data + static_cast<std::size_t>(w) * h * 3);
-    stbi_image_free(data);
-    return img;
-}
-
-} // namespace
 
 // The compressed package drawn by the real runtime (three.js + 3d-tiles-renderer with its
 // meshopt decoder) looks like the plain one: the same tiles at the same distances, geometry

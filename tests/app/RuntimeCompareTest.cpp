@@ -24,15 +24,17 @@
 #include <random>
 
 #include <nlohmann/json.hpp>
-#include <stb_image.h>
 
 #include "RunCli.h"
+#include "TestFiles.h"
 #include "pipeline/eval/Flip.h"
 #include "pipeline/eval/ImageError.h"
 
 namespace fs = std::filesystem;
+using hlod::test::readPng;
 using hlod::test::runCli;
 using hlod::test::runProcess;
+using hlod::test::webScript;
 
 namespace {
 
@@ -48,22 +50,6 @@ struct TempDir {
         fs::remove_all(path, ec);
     }
 };
-
-std::string webScript(const char* name) {
-    return std::string(HLOD_TEST_SOURCE_DIR) + "/web/" + name;
-}
-
-hlod::RgbImage readPng(const fs::path& file) {
-    int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load(file.string().c_str(), &w, &h, &n, 3);
-    hlod::RgbImage img;
-    if (!data) return img;
-    img.width = w;
-    img.height = h;
-    img.pixels.assign(data, data + static_cast<std::size_t>(w) * h * 3);
-    stbi_image_free(data);
-    return img;
-}
 
 struct SharedScene {
     const char* folder;
