@@ -2,11 +2,15 @@
 #include "pipeline/export/PackageLayout.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
+#include <set>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "pipeline/export/StackedAtlas.h"
 #include "pipeline/io/GlbMeshopt.h"
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ProxyEconomy.h"
@@ -88,6 +92,7 @@ public:
             if (!b.empty()) meshCentre_[m] = b.center();
         }
         countTriangles(tree.root);
+        drawKeys();
     }
 
     PackageLayout run() {
@@ -180,7 +185,8 @@ private:
         }
         if (leaves.empty()) return;
         std::vector<std::vector<Id>> groups;
-        splitGroup(std::move(leaves), bake_.nodes[n].frame.rotation, groups);
+        splitGroup(std::move(leaves), bake_.nodes[n].frame.rotation,
+                   tree_.nodes[n].sphere.radius * 2.0 * kGroupSpreadShare, groups);
         for (std::vector<Id>& g : groups)
             groupTile(std::move(g), self, n);
         // A folded node (and every inner node below it) is shown by its first leaf's group.
@@ -224,15 +230,14 @@ private:
 
     // Splits a group in space (median of the leaves' anchors on the longest axis of a frame
     // turned by `rotation`, so turned copies split alike) until each part holds at most
-    // kMaxGroupBytes of raw geometry. Keeps the leaves' order.
-    void splitGroup(std::vector<Id> leaves, const glm::dmat3& rotation,
+    // kMaxGroupBytes of raw geometry and its anchors spread over at most `maxSpread` (or it
+    // has fewer than 2 x kMinPartTriangles triangles). Keeps the leaves' order.
+    void splitGroup(std::vector<Id> leaves, const glm::dmat3& rotation, double maxSpread,
                     std::vector<std::vector<Id>>& out) const {
-        std::size_t raw = 0;
-        for (Id l : leaves)
+        std::size_t raw = 0, tris = 0;
+        for (Id l : leaves) {
             raw += rawBytes(l);
-        if (raw <= kMaxGroupBytes || leaves.size() < 2) {
-            out.push_back(std::move(leaves));
-            return;
+            tris += meshOf(l).triangleCount();
         }
         const glm::dmat3 back = glm::transpose(rotation);
         std::vector<glm::dvec3> at;
@@ -242,19 +247,94 @@ private:
             centres.expand(at.back());
         }
         const glm::dvec3 e = centres.extent();
+        const bool tooBig = raw > kMaxGroupBytes;
+        const bool wide = std::max({e.x, e.y, e.z}) > maxSpread && tris >= 2 * kMinPartTriangles;
+        if ((!tooBig && !wide) || leaves.size() < 2) {
+            out.push_back(std::move(leaves));
+            return;
+        }
         const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
         std::vector<std::pair<double, std::size_t>> keys;
         for (std::size_t i = 0; i < leaves.size(); ++i)
             keys.push_back({at[i][axis], i});
         std::sort(keys.begin(), keys.end());
+        // Too many bytes: half the leaves each side. Too wide: half the triangles each side,
+        // and only where both halves keep kMinPartTriangles.
         std::vector<char> low(leaves.size(), 0);
-        for (std::size_t i = 0; i < keys.size() / 2; ++i)
+        std::size_t lowTris = 0;
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            const std::size_t t = meshOf(leaves[keys[i].second]).triangleCount();
+            if (tooBig ? i >= keys.size() / 2 : lowTris + t > tris / 2) break;
             low[keys[i].second] = 1;
+            lowTris += t;
+        }
+        // A part may be culled when behind the camera; both cost their draws when in view: a
+        // draw is worth kTrianglesPerDraw triangles, so each part must hold that many for
+        // every draw the cut adds (a group of many looks is cut only into large parts), and
+        // kMinPartTriangles at least.
+        const std::size_t extraDraws =
+            tooBig ? 0
+                   : drawsOf(leaves, [&](std::size_t i) { return low[i] != 0; }) +
+                         drawsOf(leaves, [&](std::size_t i) { return low[i] == 0; }) -
+                         drawsOf(leaves, [](std::size_t) { return true; });
+        const std::size_t minPart = std::max(kMinPartTriangles, kTrianglesPerDraw * extraDraws);
+        if (!tooBig &&
+            (lowTris < minPart || tris - lowTris < minPart || splitsInstances(leaves, low))) {
+            out.push_back(std::move(leaves));
+            return;
+        }
         std::vector<Id> a, b;
         for (std::size_t i = 0; i < leaves.size(); ++i)
             (low[i] ? a : b).push_back(leaves[i]);
-        splitGroup(std::move(a), rotation, out);
-        splitGroup(std::move(b), rotation, out);
+        splitGroup(std::move(a), rotation, maxSpread, out);
+        splitGroup(std::move(b), rotation, maxSpread, out);
+    }
+
+    // Per scene mesh, the primitive a group merges it into (TileContent.h: one per look, a
+    // stacked texture's page standing for the texture; StackedAtlas.h), numbered.
+    void drawKeys() {
+        const StackedAtlases atlases(scene_, false);
+        using Key = std::tuple<long, std::array<float, 4>, int, bool, std::array<float, 3>, bool>;
+        std::map<Key, std::uint32_t> number;
+        drawKey_.resize(scene_.meshes.size());
+        for (std::size_t i = 0; i < scene_.meshes.size(); ++i) {
+            const Mesh& mesh = scene_.meshes[i];
+            const Material& m = scene_.materials[mesh.material];
+            const AtlasBand* band =
+                atlases.stacks(static_cast<Id>(i)) ? atlases.band(mesh.material) : nullptr;
+            const long image = band ? -1 - band->page : static_cast<long>(m.texture);
+            const glm::vec4 c = m.baseColor;
+            const Key key{image,
+                          {c.r, c.g, c.b, c.a},
+                          static_cast<int>(m.alphaMode),
+                          m.doubleSided,
+                          {m.emissive.r, m.emissive.g, m.emissive.b},
+                          mesh.colors.empty()};
+            drawKey_[i] =
+                number.try_emplace(key, static_cast<std::uint32_t>(number.size())).first->second;
+        }
+    }
+
+    // The draws `leaves` cost merged (their distinct primitives), with `pick` choosing which.
+    template <class Pick> std::size_t drawsOf(const std::vector<Id>& leaves, Pick&& pick) const {
+        std::set<std::uint32_t> keys;
+        for (std::size_t i = 0; i < leaves.size(); ++i)
+            if (pick(i))
+                keys.insert(drawKey_[scene_.instances[tree_.nodes[leaves[i]].instance].mesh]);
+        return keys.size();
+    }
+
+    // Whether cutting `leaves` into the `low` ones and the rest would store a mesh twice that
+    // the whole group instances (groupTile: shown by several leaves, its copies worth a node).
+    bool splitsInstances(const std::vector<Id>& leaves, const std::vector<char>& low) const {
+        std::map<Id, std::array<std::size_t, 2>> sides; // mesh -> leaves showing it per side
+        for (std::size_t i = 0; i < leaves.size(); ++i)
+            ++sides[scene_.instances[tree_.nodes[leaves[i]].instance].mesh][low[i] ? 0 : 1];
+        for (const auto& [mesh, n] : sides)
+            if (n[0] > 0 && n[1] > 0 &&
+                scene_.meshes[mesh].triangleCount() * (n[0] + n[1] - 1) >= kInstanceTriangles)
+                return true;
+        return false;
     }
 
     // The exact bounds of a mesh placed by `m` (every vertex transformed).
@@ -373,6 +453,7 @@ private:
     std::vector<double> err_;
     std::vector<std::size_t> triangles_; // original triangles below each node
     std::vector<glm::dvec3> meshCentre_; // per scene mesh: the centre of its local box
+    std::vector<std::uint32_t> drawKey_; // per scene mesh: which merged primitive it joins
     PackageLayout layout_;
 };
 

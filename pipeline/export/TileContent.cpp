@@ -70,6 +70,15 @@ const std::string& TextureStore::emissiveUriFor(Id material) {
     return uri;
 }
 
+const std::string& TextureStore::pageUri(int page) {
+    if (auto it = byPage_.find(page); it != byPage_.end()) return it->second;
+    EncodedImage image = encodePng(atlases_.pages()[static_cast<std::size_t>(page)]);
+    std::string& uri = byPage_[page];
+    uri = "textures/" + toHex(hashBytes(image.bytes.data(), image.bytes.size())) + ".png";
+    files_[uri] = std::move(image.bytes);
+    return uri;
+}
+
 std::string TextureStore::uriForFile(const std::filesystem::path& file) {
     if (file.empty()) return {};
     if (auto it = byFile_.find(file); it != byFile_.end()) return it->second;
@@ -128,16 +137,29 @@ const ContentEncoder::Prepared& ContentEncoder::prepared(Id meshId) {
     if (slot) return *slot;
     slot = std::make_unique<Prepared>();
     Prepared& p = *slot;
-    const Mesh& mesh = scene_.meshes[meshId];
-    const Material& mat = scene_.materials[mesh.material];
+    const Id material = scene_.meshes[meshId].material;
+    const Material& mat = scene_.materials[material];
+    // A leaf whose texture is in a page reads it there (StackedAtlas.h).
+    const StackedAtlases& atlases = textures_.atlases();
+    const AtlasBand* band = atlases.stacks(meshId) ? atlases.band(material) : nullptr;
+    std::optional<Mesh> stacked;
+    if (band) {
+        const int rows = atlases.pages()[static_cast<std::size_t>(band->page)].height;
+        if (std::optional<StackedUvs> s = stackUvs(scene_.meshes[meshId], *band, rows))
+            stacked = stackedMesh(scene_.meshes[meshId], *s);
+    }
+    const Mesh& mesh = stacked ? *stacked : scene_.meshes[meshId];
     p.positions = mesh.positions;
     p.normals = mesh.normals;
     p.indices = mesh.indices;
     for (const glm::vec4& c : mesh.colors)
         p.colors.push_back(quantizeColor(c));
-    const std::string uri = mesh.uvs.empty() ? std::string() : textures_.uriFor(mesh.material);
+    const std::string uri = stacked            ? textures_.pageUri(band->page)
+                            : mesh.uvs.empty() ? std::string()
+                                               : textures_.uriFor(mesh.material);
+    // A stacked texture's emission is the texture itself (StackedAtlas.h), read from the page.
     const std::string emissiveUri =
-        mesh.uvs.empty() ? std::string() : textures_.emissiveUriFor(mesh.material);
+        stacked || mesh.uvs.empty() ? std::string() : textures_.emissiveUriFor(mesh.material);
     if (!uri.empty() || !emissiveUri.empty()) p.uvs = mesh.uvs;
     optimizeOrder(p.indices, p.positions.size(), p.positions, p.normals, p.uvs, p.colors);
     writtenLook(mat, uri, emissiveUri, p.look);

@@ -9,7 +9,10 @@
 // optimisation (Forsyth-like cache order, then vertices in first-use order; unreferenced
 // vertices dropped) before it is encoded, whatever the compression, so compressed and plain
 // packages hold the same vertices in the same order.
-// Textures: a leaf with uvs whose material has a readable texture file references it; the
+// Textures: a leaf whose texture is stacked into a page (StackedAtlas.h: PNG textures, uvs
+// within one period of v per triangle) references the page, its uvs moved into its band, so
+// leaves of looks that differ only in their texture share a primitive: one draw per page.
+// Any other leaf with uvs whose material has a readable texture file references it; the
 // image is stored once per package under tiles/textures/, named by its content hash (PNG/JPEG
 // as is, other formats re-encoded as PNG, TextureImage.h), and shared by every tile that uses
 // it. Without uvs, or when the file is missing or undecodable, or the texture was embedded in
@@ -29,16 +32,21 @@
 #include <vector>
 
 #include "pipeline/export/PackageLayout.h"
+#include "pipeline/export/StackedAtlas.h"
 #include "pipeline/io/GlbWriter.h"
 #include "pipeline/proxy/ProxyMesh.h"
 #include "pipeline/scene/Scene.h"
 
 namespace hlod {
 
-// The package's texture files, loaded on first use and named by content.
+// The package's texture files, loaded on first use and named by content, and the pages
+// leaves' textures are stacked into (StackedAtlas.h), encoded as PNG on first use.
 class TextureStore {
 public:
-    explicit TextureStore(const Scene& scene) : scene_(scene) {}
+    explicit TextureStore(const Scene& scene) : scene_(scene), atlases_(scene) {}
+    const StackedAtlases& atlases() const { return atlases_; }
+    // URI of a page of atlases() ("textures/<hash>.png").
+    const std::string& pageUri(int page);
     // URI relative to tiles/ ("textures/<hash>.png") of the material's base colour texture;
     // empty when the material has no usable texture file.
     const std::string& uriFor(Id material);
@@ -51,6 +59,8 @@ private:
     std::string uriForFile(const std::filesystem::path& file);
 
     const Scene& scene_;
+    StackedAtlases atlases_;
+    std::map<int, std::string> byPage_;
     std::map<Id, std::string> byMaterial_, emissiveByMaterial_;
     std::map<std::filesystem::path, std::string> byFile_;
     std::map<std::string, std::vector<std::uint8_t>> files_;

@@ -119,7 +119,9 @@ std::vector<std::uint32_t> exponentialUvs(std::span<const glm::vec2> uvs) {
         in[i * 2 + 1] = std::isfinite(uvs[i].y) ? uvs[i].y : 0.0f;
     }
     std::vector<std::uint32_t> out(uvs.size() * 2, 0);
-    if (!uvs.empty()) meshopt_encodeFilterExp(out.data(), uvs.size(), 8, 16, in.data());
+    // One exponent per coordinate (each word its own "vector"): a u of many periods does not
+    // coarsen v, which stacked atlases need to within a texel (StackedAtlas.h).
+    if (!uvs.empty()) meshopt_encodeFilterExp(out.data(), uvs.size() * 2, 4, 16, in.data());
     return out;
 }
 

@@ -12,7 +12,7 @@
 // spans the largest): "-34" rather than "-33.83799743652344" in the JSON, the same step and so
 // the same error bound.
 // Normals: octahedral, 8-bit (filter OCTAHEDRAL, about 1 degree). Texture coordinates: floats
-// with a 8-bit exponent and a 16-bit mantissa shared per vertex (filter EXPONENTIAL, relative
+// with a 8-bit exponent per coordinate and a 16-bit mantissa (filter EXPONENTIAL, relative
 // error 2^-17). Colours: 8-bit normalised, as they are.
 //
 // Units: positions in metres of the mesh's frame. Failure: none for valid input (the streams
@@ -57,7 +57,7 @@ QuantizedPositions quantizePositions(std::span<const glm::vec3> positions, doubl
 // 4 bytes per vector: octahedral x, y, z = 1, w = 0 (meshopt_encodeFilterOct, 8 bits).
 std::vector<std::int8_t> octahedralNormals(std::span<const glm::vec3> normals);
 
-// 2 words per uv (meshopt_encodeFilterExp, 16-bit mantissa, exponent shared by u and v).
+// 2 words per uv (meshopt_encodeFilterExp, 16-bit mantissa, an exponent each).
 std::vector<std::uint32_t> exponentialUvs(std::span<const glm::vec2> uvs);
 
 // What a decoder makes of a stream stored with `filter` (nullptr or "NONE", "OCTAHEDRAL",

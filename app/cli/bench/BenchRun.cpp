@@ -24,6 +24,7 @@
 #include "pipeline/eval/ImageError.h"
 #include "pipeline/eval/Plot.h"
 #include "pipeline/export/PackageLayout.h"
+#include "pipeline/export/StackedAtlas.h"
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/DlodChain.h"
 #include "pipeline/proxy/ProxyEconomy.h"
@@ -111,13 +112,43 @@ MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh&
             !mesh.colors.empty()};
 }
 
+// A leaf as the package stores it (TileContent.h): a mesh whose texture is stacked into a page
+// reads the page through moved uvs (StackedAtlas.h), so leaves of textures on one page merge
+// into one drawable as they do in the tile; any other mesh as it is.
+struct PackageLeaves {
+    const Scene& scene;
+    const StackedAtlases& atlases;
+    std::deque<Mesh>& store;                // stacked copies (the renderer keys meshes by address)
+    std::map<Id, const Mesh*> stacked = {}; // per scene mesh, null when it keeps its texture
+
+    std::pair<const Mesh*, SurfaceLook> leaf(Id instance, const SurfaceLook& look) {
+        const Id meshId = scene.instances[instance].mesh;
+        const Mesh& mesh = scene.meshes[meshId];
+        const AtlasBand* band = atlases.stacks(meshId) ? atlases.band(mesh.material) : nullptr;
+        if (!band) return {&mesh, look};
+        const RgbaImage& page = atlases.pages()[static_cast<std::size_t>(band->page)];
+        auto [it, added] = stacked.try_emplace(meshId, nullptr);
+        if (added)
+            if (std::optional<StackedUvs> s = stackUvs(mesh, *band, page.height))
+                it->second = &store.emplace_back(stackedMesh(mesh, *s));
+        if (!it->second) return {&mesh, look};
+        SurfaceLook paged = look;
+        paged.texture = &page;
+        // Its emission, when it has a texture, is the page (as the tile writes it); the mean
+        // of the leaf's own texture stands for nothing then.
+        if (paged.emissiveIsTexture) paged.emissiveMean = glm::vec3(1.0f);
+        return {it->second, paged};
+    }
+};
+
 // The package's contents as drawables: a proxy draws its node's proxy; a leaf group draws its
 // instanced leaves one by one and its other leaves merged per look (one drawable each).
-void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& renderer,
-                         const std::vector<glm::vec4>& instColor,
+void addPackageDrawables(Config& c, const Scene& scene, const StackedAtlases& atlases,
+                         OffscreenRenderer& renderer, const std::vector<glm::vec4>& instColor,
                          const std::vector<SurfaceLook>& instLook) {
     c.layout = std::make_unique<PackageLayout>(planPackage(scene, *c.build->tree, *c.build->bake));
     c.contentDraws.resize(c.layout->contents.size());
+    PackageLeaves leaves{scene, atlases, c.mergedMeshes};
     for (std::size_t k = 0; k < c.layout->contents.size(); ++k) {
         const ContentPlan& plan = c.layout->contents[k];
         Config::ContentDraw& draw = c.contentDraws[k];
@@ -129,30 +160,39 @@ void addPackageDrawables(Config& c, const Scene& scene, OffscreenRenderer& rende
             continue;
         }
         std::map<MergeKey, Mesh*> merged;
-        std::vector<std::pair<Mesh*, Id>> mergedOrder; // first member's instance, for its look
+        struct FirstMember {
+            Mesh* merged;
+            Id instance; // its colour stands for all (the key holds it)
+            SurfaceLook look;
+        };
+        std::vector<FirstMember> mergedOrder;
         for (const LeafSlot& slot : plan.leaves) {
             const Id i = slot.instance;
-            const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
-            if (mesh.triangleCount() == 0) continue;
-            draw.triangles += mesh.triangleCount();
+            const auto [mesh, look] = leaves.leaf(i, instLook[i]);
+            if (mesh->triangleCount() == 0) continue;
+            draw.triangles += mesh->triangleCount();
             if (!slot.merged) {
-                draw.drawables.push_back(renderer.addMesh(c.layer, mesh, scene.instanceTransform(i),
-                                                          instColor[i], instLook[i]));
+                draw.drawables.push_back(renderer.addMesh(
+                    c.layer, *mesh, scene.instanceTransform(i), instColor[i], look));
                 continue;
             }
-            auto [it, added] = merged.try_emplace(mergeKeyOf(instColor[i], instLook[i], mesh));
+            // A stacked leaf's written colour is its factor (the page holds the texture): the
+            // tile merges on that, not on the factor times its texture's mean.
+            const glm::vec4 keyColor =
+                look.texture != instLook[i].texture ? look.factor : instColor[i];
+            auto [it, added] = merged.try_emplace(mergeKeyOf(keyColor, look, *mesh));
             if (added) {
                 Mesh& m = c.mergedMeshes.emplace_back();
                 m.name = "merged";
-                m.material = mesh.material;
+                m.material = mesh->material;
                 it->second = &m;
-                mergedOrder.emplace_back(&m, i);
+                mergedOrder.push_back({&m, i, look});
             }
-            appendPlaced(*it->second, mesh, scene.instanceTransform(i));
+            appendPlaced(*it->second, *mesh, scene.instanceTransform(i));
         }
-        for (const auto& [m, i] : mergedOrder)
-            draw.drawables.push_back(
-                renderer.addMesh(c.layer, *m, glm::dmat4(1.0), instColor[i], instLook[i]));
+        for (const FirstMember& f : mergedOrder)
+            draw.drawables.push_back(renderer.addMesh(c.layer, *f.merged, glm::dmat4(1.0),
+                                                      instColor[f.instance], f.look));
     }
 }
 
@@ -351,6 +391,7 @@ void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& o) {
     // minutes (torcs-spring: 4418 instances x 7 configurations), and `hlod bench` exits right
     // after this function, which closes the display connection anyway.
     OffscreenRenderer& renderer = *new OffscreenRenderer(o.width, o.height, o.shading);
+    const StackedAtlases* atlases = nullptr; // the package's texture pages, built on first use
     for (Config& c : configs) {
         c.layer = renderer.addLayer();
         if (c.kind == Kind::Hlod) {
@@ -377,8 +418,11 @@ void runBench(PipelineGraph& graph, NodeId importNode, const BenchOptions& o) {
             c.selection = std::make_unique<SelectionTree>(tree, std::move(tris),
                                                           rootHasNoProxy(tree, *c.build->bake));
             c.cache = std::make_unique<FrontCache>(*c.selection);
-            if (o.draw == HlodDraw::Package)
-                addPackageDrawables(c, scene, renderer, instColor, instLook);
+            if (o.draw == HlodDraw::Package) {
+                // Never freed, as the renderer (its textures point into the pages).
+                if (!atlases) atlases = new StackedAtlases(scene);
+                addPackageDrawables(c, scene, *atlases, renderer, instColor, instLook);
+            }
         } else {
             c.instanceDrawables.resize(nInst);
             for (Id i = 0; i < nInst; ++i) {
