@@ -83,7 +83,10 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     legend_.addTo(renderer);
 
     connect(model_, &StudioModel::viewChanged, this, &DisplayController::refresh);
-    connect(model_, &StudioModel::sceneChanged, this, &DisplayController::refresh);
+    connect(model_, &StudioModel::sceneChanged, this, [this] {
+        spheresFor_ = nullptr; // a new scene may live where the old one did
+        refresh();
+    });
     connect(model_, &StudioModel::buildFinished, this, [this] {
         previewDirty_ = true;
         refresh();
@@ -308,24 +311,62 @@ void DisplayController::beforeRender() {
         updatePreview();
         return; // updatePreview reports the frame
     }
-    if (model_->scene()) {
-        // The original scene (also under the cluster colours): one draw per instance.
-        const SceneStats s = model_->scene()->stats();
-        stats.drawCalls = s.drawCalls;
-        stats.triangles = s.triangles;
-    }
+    if (model_->scene()) stats = originalFrame();
     last_ = stats;
-    if (mode == DisplayMode::Clusters)
-        setOverlay(
-            cut_.size() == 1
-                ? tr("Level %1 of %2: 1 cluster").arg(model_->view().level).arg(model_->maxLevel())
-                : tr("Level %1 of %2: %3 clusters")
-                      .arg(model_->view().level)
-                      .arg(model_->maxLevel())
-                      .arg(cut_.size()));
-    else
-        setOverlay({});
+    setOverlay(mode == DisplayMode::Clusters ? clustersOverlay() : originalOverlay());
     Q_EMIT frameStats(stats);
+}
+
+FrameStats DisplayController::originalFrame() {
+    // The original scene (also under the cluster colours): one draw per instance in the view,
+    // culled as the HLOD preview culls (issue 31 #8: Algorithm 5's frustum test on bounding
+    // spheres), so the two overlays compare.
+    const Scene& scene = *model_->scene();
+    if (spheresFor_ != &scene) {
+        spheres_.clear();
+        spheres_.reserve(scene.instances.size());
+        for (Id i = 0; i < scene.instances.size(); ++i) {
+            const Aabb box = scene.instanceBounds(i);
+            spheres_.push_back(box.empty() ? glm::dvec4(0.0, 0.0, 0.0, -1.0)
+                                           : glm::dvec4(box.center(), 0.5 * box.diagonal()));
+        }
+        spheresFor_ = &scene;
+    }
+    const Frustum frustum = Frustum::fromCamera(currentCamera());
+    FrameStats stats;
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        const glm::dvec4& s = spheres_[i];
+        if (s.w < 0.0 || !frustum.intersectsSphere(glm::dvec3(s), s.w)) continue;
+        ++stats.drawCalls;
+        stats.triangles += scene.meshes[scene.instances[i].mesh].triangleCount();
+    }
+    return stats;
+}
+
+QString DisplayController::originalOverlay() const {
+    if (!model_->scene()) return {};
+    const SceneStats all = model_->scene()->stats();
+    return tr("Draw calls: %1 in view (of %2)\nTriangles: %3 in view (of %4)")
+        .arg(count(last_.drawCalls), count(all.drawCalls), count(last_.triangles),
+             count(all.triangles));
+}
+
+QString DisplayController::clustersOverlay() const {
+    // Counted as the Statistics' per-level table counts (ClusterNode::level exactly L), so the
+    // two agree; the cut also holds lower nodes no level-L cluster holds, said apart.
+    const int level = model_->view().level;
+    const ClusterTree& tree = *model_->built().build->tree;
+    const auto atLevel = static_cast<std::size_t>(std::count_if(
+        cut_.begin(), cut_.end(), [&](Id n) { return tree.nodes[n].level == level; }));
+    QString text = tr("Level %1 of %2: %3 level-%1 nodes (as in Statistics)")
+                       .arg(level)
+                       .arg(model_->maxLevel())
+                       .arg(count(atLevel));
+    if (const std::size_t lower = cut_.size() - atLevel; lower > 0)
+        text += QLatin1Char('\n') + tr("+ %1 lower clusters and meshes in no level-%2 cluster")
+                                        .arg(count(lower))
+                                        .arg(level);
+    return text;
 }
 
 void DisplayController::updatePreview() {

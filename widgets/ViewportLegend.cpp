@@ -8,6 +8,7 @@
 #include <QFontMetrics>
 #include <QPainter>
 #include <vtkActor2D.h>
+#include <vtkCoordinate.h>
 #include <vtkImageData.h>
 #include <vtkImageMapper.h>
 #include <vtkNew.h>
@@ -28,7 +29,7 @@ QColor toQColor(const glm::vec3& c) { return QColor::fromRgbF(c.r, c.g, c.b); }
 // The legend box: swatches and lines of text on the overlay's dark translucent background.
 QImage paintLegend(const std::vector<ViewportLegend::Entry>& entries, double scale) {
     QFont font = QApplication::font();
-    font.setPixelSize(14);
+    font.setPixelSize(13);
     const QFontMetrics metrics(font);
     const int line = std::max(metrics.height(), kSwatch) + 3;
     int width = 0;
@@ -69,7 +70,14 @@ ViewportLegend::ViewportLegend()
     mapper->SetColorWindow(255.0); // the image's bytes as they are
     mapper->SetColorLevel(127.5);
     actor_->SetMapper(mapper);
+    // In the top-right corner (issue 31 #9): a fitted scene sits in the middle and, seen from
+    // above, lower half of the view, and the frame's counters take the top-left corner. The
+    // position is an offset in pixels from the viewport's top-right corner (setEntries).
+    vtkNew<vtkCoordinate> corner;
+    corner->SetCoordinateSystemToNormalizedViewport();
+    corner->SetValue(1.0, 1.0);
     actor_->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    actor_->GetPositionCoordinate()->SetReferenceCoordinate(corner);
     actor_->PickableOff();
     actor_->VisibilityOff();
 }
@@ -103,7 +111,7 @@ void ViewportLegend::setEntries(std::vector<Entry> entries, double scale) {
         std::memcpy(out + static_cast<std::size_t>(row) * w * 4, flipped.constScanLine(row),
                     static_cast<std::size_t>(w) * 4);
     pixels_->Modified();
-    actor_->SetPosition(kMargin * scale_, kMargin * scale_);
+    actor_->SetPosition(-w - kMargin * scale_, -h - kMargin * scale_);
 }
 
 } // namespace hlod::widgets
