@@ -97,7 +97,7 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     levels_ = makeTable(0, LevelColumnCount, content);
     levels_->verticalHeader()->hide();
     levels_->setHorizontalHeaderLabels({tr("Level"), tr("Nodes"), tr("Children"),
-                                        tr("Budget (%1)").arg(lengthUnit()), tr("Triangles"),
+                                        tr("Budget\n(%1)").arg(lengthUnit()), tr("Triangles"),
                                         tr("Share")});
     const QStringList tips{tr("Level in the tree: 0 holds the original meshes"),
                            tr("Nodes whose level is exactly this one (level 0: meshes). The "
@@ -118,15 +118,16 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     branch_->setObjectName(QStringLiteral("StatsBranch"));
     branch_->setWordWrap(true);
     branch_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    warning_ = note(content);
+    // Above the scrolled part, as wide as the dock: always in sight, never cut (issue 31 #7).
+    warning_ = note(this);
     warning_->setObjectName(QStringLiteral("StatsWarning"));
     warning_->setStyleSheet(QStringLiteral("QLabel { background: #fff1c2; color: #5a3d00; "
                                            "border: 1px solid #d9a400; padding: 4px; }"));
     warning_->hide();
     auto* column = new QVBoxLayout(content);
     column->setContentsMargins(0, 0, 0, 0);
-    for (QWidget* w : std::initializer_list<QWidget*>{branch_, warning_, table_, note_, levels_,
-                                                      economy_, summary_})
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{branch_, table_, note_, levels_, economy_, summary_})
         column->addWidget(w);
     column->addStretch(1);
     auto* scroll = new QScrollArea(this);
@@ -138,6 +139,7 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     plot_->setMinimumHeight(90);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(warning_);
     layout->addWidget(scroll, 3);
     layout->addWidget(plot_, 1);
     connect(model_, &StudioModel::sceneChanged, this, &StatsPanel::refresh);

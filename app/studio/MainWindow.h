@@ -264,6 +264,7 @@ private:
     std::unique_ptr<PendingProject> pendingProject_; // read, waiting for its scene to load
     std::optional<SavedCamera> pendingCamera_;       // an opened project's, until shown
     bool firstBuildOfScene_ = true;                  // the next finished build is the scene's first
+    QString lastWarning_; // the last build's dissolve warning (logged when it changes)
     hlod::widgets::DisplayToolBar* toolBar_ = nullptr;
     QLabel* buildLabel_ = nullptr;
     QProgressBar* buildBar_ = nullptr;

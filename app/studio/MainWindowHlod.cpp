@@ -213,11 +213,13 @@ void MainWindow::onBuildFinished() {
                 .arg(built.build->bake->baked)
                 .arg(built.build->bake->reused));
         // Visible where one looks after a build, not only at the bottom of Statistics.
-        if (const QString warning = hlod::widgets::dissolveWarning(built, model_->clusterLabels());
-            !warning.isEmpty()) {
+        // Once per new warning: every rebuild of the same tree would repeat it.
+        const QString warning = hlod::widgets::dissolveWarning(built, model_->clusterLabels());
+        if (!warning.isEmpty() && warning != lastWarning_) {
             log_->warning(warning);
             statusBar()->showMessage(warning, 15000);
         }
+        lastWarning_ = warning;
     }
     if (startupPending_) applyStartupView();
 }
