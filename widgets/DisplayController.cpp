@@ -358,7 +358,8 @@ QString DisplayController::clustersOverlay() const {
     const ClusterTree& tree = *model_->built().build->tree;
     const auto atLevel = static_cast<std::size_t>(std::count_if(
         cut_.begin(), cut_.end(), [&](Id n) { return tree.nodes[n].level == level; }));
-    QString text = tr("Level %1 of %2: %3 level-%1 nodes (as in Statistics)")
+    QString text = (atLevel == 1 ? tr("Level %1 of %2: 1 level-%1 node")
+                                 : tr("Level %1 of %2: %3 level-%1 nodes"))
                        .arg(level)
                        .arg(model_->maxLevel())
                        .arg(count(atLevel));

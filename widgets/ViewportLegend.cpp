@@ -70,12 +70,13 @@ ViewportLegend::ViewportLegend()
     mapper->SetColorWindow(255.0); // the image's bytes as they are
     mapper->SetColorLevel(127.5);
     actor_->SetMapper(mapper);
-    // In the top-right corner (issue 31 #9): a fitted scene sits in the middle and, seen from
-    // above, lower half of the view, and the frame's counters take the top-left corner. The
-    // position is an offset in pixels from the viewport's top-right corner (setEntries).
+    // In the bottom-right corner (issue 31 #9): the bottom-left one covered the scene's
+    // content in the README's views, and the frame's counters take the top-left corner (the
+    // top-right one collides with them in a small view). The position is an offset in pixels
+    // from the viewport's bottom-right corner (setEntries).
     vtkNew<vtkCoordinate> corner;
     corner->SetCoordinateSystemToNormalizedViewport();
-    corner->SetValue(1.0, 1.0);
+    corner->SetValue(1.0, 0.0);
     actor_->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
     actor_->GetPositionCoordinate()->SetReferenceCoordinate(corner);
     actor_->PickableOff();
@@ -111,7 +112,7 @@ void ViewportLegend::setEntries(std::vector<Entry> entries, double scale) {
         std::memcpy(out + static_cast<std::size_t>(row) * w * 4, flipped.constScanLine(row),
                     static_cast<std::size_t>(w) * 4);
     pixels_->Modified();
-    actor_->SetPosition(-w - kMargin * scale_, -h - kMargin * scale_);
+    actor_->SetPosition(-w - kMargin * scale_, kMargin * scale_);
 }
 
 } // namespace hlod::widgets

@@ -1,6 +1,6 @@
 // The colour legend in the viewport's overlay (issue 20 #6): what the colours of Clusters mode
 // (one colour per cluster of the shown level) and of the HLOD preview's tint by depth (one
-// colour per tree depth) mean, and the selection's highlight colour. Drawn in the top-right
+// colour per tree depth) mean, and the selection's highlight colour. Drawn in the bottom-right
 // corner (issue 31 #9: in the bottom-left it covered the scene; the counters' overlay takes
 // the top-left): a square swatch and a line of text per
 // entry on a dark, translucent box, painted with Qt (the application's font, sharp at any

@@ -97,13 +97,16 @@ TEST_F(DisplayModesTest, ClustersModeColoursTheLevelsCutAndMatchesBaseline) {
     EXPECT_EQ(display->shownClusters(), cut);
     // suggestedLevel: the lowest level above the leaves with at most 12 clusters.
     EXPECT_LE(cut.size(), 12u);
+    // The overlay counts the level's own nodes, as the Statistics' table does (issue 31 #1).
+    const auto own = std::count_if(
+        cut.begin(), cut.end(), [&](Id n) { return tree.nodes[n].level == model->view().level; });
     EXPECT_TRUE(display->overlayText().contains(
-        cut.size() == 1 ? QStringLiteral("1 cluster")
-                        : QStringLiteral("%1 clusters").arg(cut.size())));
+        own == 1 ? QStringLiteral(": 1 level-%1 node").arg(model->view().level)
+                 : QStringLiteral(": %1 level-%2 nodes").arg(own).arg(model->view().level)));
     // The baseline (default parameters: level growth 2, proxy ratio 0.35): the sample's tree
     // is the root over 5 clusters and 69 single meshes, so level 1 shows 74 colours and the
     // suggested level is 2, the whole yard in the root's colour inside its bounding sphere,
-    // labelled "Level 2 of 2: 1 cluster".
+    // labelled "Level 2 of 2: 1 level-2 node", the legend bottom right.
     const double diff = test::compareWithBaseline(frame, QStringLiteral("mode-clusters"));
     EXPECT_GE(diff, 0.0) << "missing baseline: run with HLOD_UPDATE_BASELINES=1";
     EXPECT_LT(diff, kBaselineTolerance);
