@@ -304,6 +304,42 @@ Camera DisplayController::currentCamera() const {
     return camera;
 }
 
+void DisplayController::placeLegend() {
+    // The free corner (bottom right, bottom left, top right) the fewest meshes' bounding
+    // spheres reach into:
+    // the legend covers as little of the scene as it can from this camera (issue 31 #9).
+    if (!legend_.visible() || !model_->scene() || spheresFor_ != model_->scene().get()) return;
+    const Camera camera = currentCamera();
+    const glm::dmat4 clip = camera.projection() * camera.view();
+    const double H = viewport_->frameHeight();
+    const double W = viewport_->height() > 0 ? H * viewport_->width() / viewport_->height() : H;
+    const QSize box = legend_.pixelSize();
+    const double pixelsPerUnit = H / (2.0 * std::tan(camera.fovY / 2.0));
+    const double bw = box.width() + 16.0, bh = box.height() + 16.0;
+    using Corner = ViewportLegend::Corner;
+    const Corner corners[3] = {Corner::BottomRight, Corner::BottomLeft, Corner::TopRight};
+    std::size_t under[3] = {0, 0, 0};
+    for (const glm::dvec4& s : spheres_) {
+        if (s.w < 0.0) continue;
+        const glm::dvec4 p = clip * glm::dvec4(glm::dvec3(s), 1.0);
+        if (p.w <= 0.0) continue;
+        const double x = (p.x / p.w * 0.5 + 0.5) * W, y = (p.y / p.w * 0.5 + 0.5) * H; // y up
+        // The sphere's radius on screen (p.w is the depth in front of the eye).
+        const double r = s.w * pixelsPerUnit / p.w;
+        const bool left = (x - r) < bw;
+        const bool right = (x + r) > W - bw;
+        const bool low = (y - r) < bh;
+        const bool high = (y + r) > H - bh;
+        under[0] += right && low;
+        under[1] += left && low;
+        under[2] += right && high;
+    }
+    int best = 0;
+    for (int c = 1; c < 3; ++c)
+        if (under[c] < under[best]) best = c;
+    legend_.setCorner(corners[best]);
+}
+
 void DisplayController::beforeRender() {
     const DisplayMode mode = model_->hasBuild() ? model_->view().mode : DisplayMode::Original;
     FrameStats stats;
@@ -312,6 +348,7 @@ void DisplayController::beforeRender() {
         return; // updatePreview reports the frame
     }
     if (model_->scene()) stats = originalFrame();
+    placeLegend();
     last_ = stats;
     setOverlay(mode == DisplayMode::Clusters ? clustersOverlay() : originalOverlay());
     Q_EMIT frameStats(stats);
@@ -358,11 +395,12 @@ QString DisplayController::clustersOverlay() const {
     const ClusterTree& tree = *model_->built().build->tree;
     const auto atLevel = static_cast<std::size_t>(std::count_if(
         cut_.begin(), cut_.end(), [&](Id n) { return tree.nodes[n].level == level; }));
-    QString text = (atLevel == 1 ? tr("Level %1 of %2: 1 level-%1 node")
-                                 : tr("Level %1 of %2: %3 level-%1 nodes"))
-                       .arg(level)
-                       .arg(model_->maxLevel())
-                       .arg(count(atLevel));
+    QString text = atLevel == 1
+                       ? tr("Level %1 of %2: 1 level-%1 node").arg(level).arg(model_->maxLevel())
+                       : tr("Level %1 of %2: %3 level-%1 nodes")
+                             .arg(level)
+                             .arg(model_->maxLevel())
+                             .arg(count(atLevel));
     if (const std::size_t lower = cut_.size() - atLevel; lower > 0)
         text += QLatin1Char('\n') + tr("+ %1 lower clusters and meshes in no level-%2 cluster")
                                         .arg(count(lower))
@@ -385,6 +423,8 @@ void DisplayController::updatePreview() {
         updateLegend();
     }
     last_ = {result.drawCalls, result.triangles, result.nodesVisited};
+    if (model_->scene() && spheresFor_ != model_->scene().get()) originalFrame();
+    placeLegend();
     setOverlay(tr("Draw calls: %1\nTriangles: %2\nNodes visited: %3")
                    .arg(count(last_.drawCalls), count(last_.triangles), count(last_.nodesVisited)));
     Q_EMIT frameStats(last_);

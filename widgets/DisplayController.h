@@ -73,7 +73,8 @@ public:
     QString overlayText() const;
     // The instances the selection highlight draws (sorted; empty when it is hidden).
     std::vector<Id> highlightedInstances() const;
-    // The legend's lines (empty when it is hidden).
+    // The legend's corner (ViewportLegend::Corner) and lines (empty when it is hidden).
+    ViewportLegend::Corner legendCorner() const { return legend_.corner(); }
     std::vector<ViewportLegend::Entry> legendEntries() const;
 
 Q_SIGNALS:
@@ -93,6 +94,8 @@ private:
     // HLOD preview culls), and the overlay that gives them next to the whole scene's.
     FrameStats originalFrame();
     QString originalOverlay() const;
+    // Puts the legend in the free corner with the fewest meshes under it.
+    void placeLegend();
     void updateLegend();
     vtkSmartPointer<vtkActor> makeActor(bool lit) const;
 

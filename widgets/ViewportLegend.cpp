@@ -70,15 +70,11 @@ ViewportLegend::ViewportLegend()
     mapper->SetColorWindow(255.0); // the image's bytes as they are
     mapper->SetColorLevel(127.5);
     actor_->SetMapper(mapper);
-    // In the bottom-right corner (issue 31 #9): the bottom-left one covered the scene's
-    // content in the README's views, and the frame's counters take the top-left corner (the
-    // top-right one collides with them in a small view). The position is an offset in pixels
-    // from the viewport's bottom-right corner (setEntries).
-    vtkNew<vtkCoordinate> corner;
-    corner->SetCoordinateSystemToNormalizedViewport();
-    corner->SetValue(1.0, 0.0);
+    // Placed at an offset in pixels from a corner of the viewport (place()).
+    reference_ = vtkSmartPointer<vtkCoordinate>::New();
+    reference_->SetCoordinateSystemToNormalizedViewport();
     actor_->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
-    actor_->GetPositionCoordinate()->SetReferenceCoordinate(corner);
+    actor_->GetPositionCoordinate()->SetReferenceCoordinate(reference_);
     actor_->PickableOff();
     actor_->VisibilityOff();
 }
@@ -112,7 +108,21 @@ void ViewportLegend::setEntries(std::vector<Entry> entries, double scale) {
         std::memcpy(out + static_cast<std::size_t>(row) * w * 4, flipped.constScanLine(row),
                     static_cast<std::size_t>(w) * 4);
     pixels_->Modified();
-    actor_->SetPosition(-w - kMargin * scale_, kMargin * scale_);
+    place();
+}
+
+void ViewportLegend::setCorner(Corner corner) {
+    if (corner == corner_) return;
+    corner_ = corner;
+    place();
+}
+
+void ViewportLegend::place() {
+    const double w = image_.width(), h = image_.height(), m = kMargin * scale_;
+    const bool right = corner_ != Corner::BottomLeft;
+    const bool top = corner_ == Corner::TopRight;
+    reference_->SetValue(right ? 1.0 : 0.0, top ? 1.0 : 0.0);
+    actor_->SetPosition(right ? -w - m : m, top ? -h - m : m);
 }
 
 } // namespace hlod::widgets
