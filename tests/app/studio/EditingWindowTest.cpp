@@ -210,7 +210,8 @@ double highlightShare(const QImage& before, const QImage& after) {
                 continue;
             ++changed;
             // The highlight's magenta (1, 0, 0.85), lit or shaded (issue 31 #9).
-            if (qRed(b) > 150 && qBlue(b) > 120 && qGreen(b) + 60 < std::min(qRed(b), qBlue(b)))
+            // Shaded faces keep the hue: red and blue well above green, whatever the light.
+            if (qRed(b) > 90 && qBlue(b) > 75 && qGreen(b) + 50 < std::min(qRed(b), qBlue(b)))
                 ++lit;
         }
     return changed ? double(lit) / changed : 0.0;
