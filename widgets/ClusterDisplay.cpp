@@ -25,7 +25,10 @@ namespace {
 constexpr int kCircleSegments = 48;
 
 const glm::vec3 kUnclusteredColor{0.6f, 0.6f, 0.6f};
-const glm::vec3 kHighlightColor{1.0f, 0.62f, 0.05f};
+// Saturated magenta: a hue no cluster or depth colour takes (categoryColor, depthColor), at
+// full saturation where they have 0.62 (issue 31 #9: the orange it replaces was close to a
+// cluster colour and to depth 1's).
+const glm::vec3 kHighlightColor{1.0f, 0.0f, 0.85f};
 
 struct LineBuilder {
     vtkNew<vtkPoints> points;
@@ -98,15 +101,16 @@ glm::vec3 clusterColorOf(Id node, const std::vector<int>* labels) {
 glm::vec3 highlightColor() { return kHighlightColor; }
 
 glm::vec3 depthColor(int depth) {
-    // Hues from red through yellow, green and blue to magenta, 8 steps, then repeat.
+    // 8 colours, then repeat; each depth's hue is far from the depths next to it (issue 31 #9:
+    // a rainbow order made adjacent depths look alike) and from the highlight's magenta.
     static constexpr std::array<std::array<float, 3>, 8> kColors{{{0.90f, 0.22f, 0.20f},
-                                                                  {0.95f, 0.55f, 0.15f},
-                                                                  {0.93f, 0.85f, 0.20f},
-                                                                  {0.45f, 0.80f, 0.25f},
-                                                                  {0.20f, 0.75f, 0.70f},
                                                                   {0.25f, 0.50f, 0.90f},
+                                                                  {0.93f, 0.85f, 0.20f},
                                                                   {0.55f, 0.35f, 0.85f},
-                                                                  {0.85f, 0.35f, 0.70f}}};
+                                                                  {0.45f, 0.80f, 0.25f},
+                                                                  {0.95f, 0.55f, 0.15f},
+                                                                  {0.20f, 0.75f, 0.70f},
+                                                                  {0.78f, 0.88f, 0.30f}}};
     const auto& c = kColors[static_cast<std::size_t>(std::max(depth, 0)) % kColors.size()];
     return {c[0], c[1], c[2]};
 }

@@ -50,7 +50,8 @@ vtkSmartPointer<vtkPolyData> boundsWireframe(const ClusterTree& tree, const std:
                                              BoundsShape shape,
                                              const std::vector<int>* labels = nullptr);
 
-// The flat colour of the selection highlight.
+// The flat colour of the selection highlight: saturated magenta, a hue no cluster or depth
+// colour takes.
 glm::vec3 highlightColor();
 
 // `depths` non-null: tint each drawn node by its depth (StudioModel::depths()).
@@ -68,7 +69,8 @@ vtkSmartPointer<vtkPolyData> previewHighlight(const Scene& scene, const NodeOutp
                                               const std::vector<Id>& drawList,
                                               const std::vector<Id>& instances);
 
-// Colour of tree depth `depth` in the preview's tint (root red, then through the hues).
+// Colour of tree depth `depth` in the preview's tint (root red, then blue, yellow, violet,
+// green, orange, teal, lime, repeating): adjacent depths differ in hue by 60° or more.
 glm::vec3 depthColor(int depth);
 
 } // namespace hlod::widgets

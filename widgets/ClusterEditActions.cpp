@@ -173,6 +173,21 @@ void ClusterEditActions::updateActions() {
     lock_->setEnabled(idle && unlocked);
     unlock_->setEnabled(idle && lockedGroup);
     exclude_->setEnabled(idle && !root && instances > excluded.size());
+    // Exclude on a cluster excludes its meshes (issue 31 #10: a cluster has no geometry of its
+    // own to leave out); the action says how many, and both trees then mark them "(excluded)".
+    const std::size_t toExclude = instances - std::min(instances, excluded.size());
+    if (clusters && toExclude > 0) {
+        exclude_->setText(toExclude == 1 ? tr("&Exclude 1 Mesh from HLOD")
+                                         : tr("&Exclude %1 Meshes from HLOD").arg(toExclude));
+        exclude_->setStatusTip(tr("Exclude every mesh of the selected clusters: each hangs from "
+                                  "the root, drawn as itself and never merged into a proxy; the "
+                                  "Clusters and Scene tabs mark them (excluded)"));
+    } else {
+        exclude_->setText(tr("&Exclude from HLOD"));
+        exclude_->setStatusTip(tr("Hang the selected meshes directly from the root, never "
+                                  "merged; the Clusters and Scene tabs mark them (excluded)"));
+    }
+    exclude_->setToolTip(exclude_->statusTip());
     include_->setEnabled(idle && !excluded.empty());
     std::vector<InstanceSet> items;
     InstanceSet target;

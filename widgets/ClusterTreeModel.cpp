@@ -4,15 +4,43 @@
 #include <algorithm>
 #include <numbers>
 
+#include <QIcon>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLocale>
 #include <QMimeData>
+#include <QPainter>
+#include <QPixmap>
 
 #include "pipeline/view/TreeViews.h"
 #include "widgets/NumberFormat.h"
 
 namespace hlod::widgets {
+
+namespace {
+
+// A small padlock (shackle over a body), drawn once: the Clusters tab's mark of a locked
+// cluster.
+QIcon lockIcon() {
+    static const QIcon icon = [] {
+        QPixmap pixmap(32, 32);
+        pixmap.fill(Qt::transparent);
+        QPainter p(&pixmap);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.setPen(QPen(QColor(90, 90, 100), 3.5));
+        p.setBrush(Qt::NoBrush);
+        p.drawArc(QRectF(9, 3, 14, 18), 0, 180 * 16);
+        p.drawLine(QPointF(9, 12), QPointF(9, 15));
+        p.drawLine(QPointF(23, 12), QPointF(23, 15));
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(200, 150, 40));
+        p.drawRoundedRect(QRectF(5, 14, 22, 16), 3, 3);
+        return QIcon(pixmap);
+    }();
+    return icon;
+}
+
+} // namespace
 
 ClusterTreeModel::ClusterTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
 
@@ -189,7 +217,25 @@ QString ClusterTreeModel::name(Id node) const {
     const MeshInstance& instance = scene_->instances[n.instance];
     QString label = QString::fromStdString(scene_->nodes[instance.node].name);
     if (label.isEmpty()) label = QString::fromStdString(scene_->meshes[instance.mesh].name);
-    return label.isEmpty() ? tr("Instance %1").arg(n.instance) : label;
+    if (label.isEmpty()) label = tr("Instance %1").arg(n.instance);
+    return excluded(n.instance) ? tr("%1 (excluded)").arg(label) : label;
+}
+
+bool ClusterTreeModel::excluded(Id instance) const {
+    if (!build_) return false;
+    const InstanceSet& set = build_->cluster.excluded;
+    return std::binary_search(set.begin(), set.end(), instance);
+}
+
+QString ClusterTreeModel::shownName(Id node) const {
+    // The lock is the row's icon: "Cluster 117 (locked)" was cut off in the dock's default
+    // width (issue 31 #10). An excluded mesh keeps its mark in the text, which the view elides
+    // in the middle so the mark stays.
+    if (!build_ || node >= build_->tree->nodes.size()) return {};
+    const ClusterNode& n = build_->tree->nodes[node];
+    if (n.isLeaf()) return name(node);
+    const int number = node < labels_.size() ? labels_[node] : static_cast<int>(node);
+    return tr("Cluster %1").arg(number);
 }
 
 double ClusterTreeModel::volume(Id node) const {
@@ -217,13 +263,16 @@ QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
         node < build_->bake->nodes.size() ? build_->bake->nodes[node].proxy.triangleCount() : 0;
     const QLocale locale;
     if (role == NodeIdRole) return QVariant::fromValue(static_cast<uint>(node));
+    if (role == Qt::DecorationRole)
+        return index.column() == NameColumn && n.locked ? QVariant(lockIcon()) : QVariant();
     if (role == Qt::TextAlignmentRole)
         return index.column() == NameColumn ? QVariant()
                                             : QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ToolTipRole) {
-        const QString counts = tr("%1 triangles below, %2 across, volume %3")
-                                   .arg(locale.toString(static_cast<qulonglong>(triangles_[node])),
-                                        formatLength(size(node)), formatVolume(volume(node)));
+        const QString counts =
+            tr("%1 triangles below, %2 %4 across, volume %3 cubic %4")
+                .arg(locale.toString(static_cast<qulonglong>(triangles_[node])),
+                     formatLength(size(node)), formatVolume(volume(node)), lengthUnit());
         if (n.isLeaf())
             return tr("%1: mesh instance %2, %3").arg(name(node)).arg(n.instance).arg(counts);
         return tr("%1: %2 children, %3, proxy %4 triangles, fill %5%6")
@@ -239,7 +288,7 @@ QVariant ClusterTreeModel::data(const QModelIndex& index, int role) const {
     const bool raw = role == ValueRole;
     switch (index.column()) {
     case NameColumn:
-        return name(node);
+        return raw ? QVariant(name(node)) : QVariant(shownName(node));
     case TrianglesColumn:
         return raw ? QVariant::fromValue(static_cast<qulonglong>(triangles_[node]))
                    : QVariant(formatCount(triangles_[node]));
@@ -268,7 +317,8 @@ QVariant ClusterTreeModel::headerData(int section, Qt::Orientation orientation, 
             return tr("Level in the tree: 0 for single meshes, the root highest");
         case SizeColumn:
             return tr("Diameter of the cluster's bounding sphere (sphere trees) or diagonal of "
-                      "its box");
+                      "its box, in %1 (the unit of the scene's coordinates)")
+                .arg(lengthUnit());
         default:
             return {};
         }

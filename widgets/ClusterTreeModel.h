@@ -8,7 +8,7 @@
 // the size: the diameter of the bounding volume of the tree's volume type (the sphere for
 // sphere trees, the box's diagonal otherwise), a length with its unit; the tooltip also gives
 // that volume. Numbers are formatted for reading (NumberFormat.h), never in scientific
-// notation; ValueRole gives the raw number (metres for the size).
+// notation; ValueRole gives the raw number (scene units for the size).
 // The model shows a build it is given (shared, immutable); it owns no pipeline state.
 //
 // Drag and drop (the "move" hand edit of issue #7): rows below the root can be dragged (meshes
@@ -86,10 +86,16 @@ public:
     bool dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
                       const QModelIndex& parent) override;
 
-    // Values shown for a node (also used by tests).
+    // Values shown for a node (also used by tests). name: the full label, "Cluster 12
+    // (locked)", "wheel (excluded)" (the tooltip's and ValueRole's); shownName: the name
+    // column's text, where a locked cluster's mark is the row's lock icon instead (short
+    // enough for the dock's width).
     QString name(Id node) const;
-    double volume(Id node) const; // m³
-    double size(Id node) const;   // m
+    QString shownName(Id node) const;
+    // Whether the shown build's Cluster node excludes `instance` (a hand edit).
+    bool excluded(Id instance) const;
+    double volume(Id node) const; // cubic scene units
+    double size(Id node) const;   // scene units
 
 Q_SIGNALS:
     // A drop asked to move `items` (leaf sets) into the cluster `target` (a leaf set).

@@ -83,7 +83,10 @@ DisplayController::DisplayController(StudioModel* model, Viewport* viewport, QOb
     legend_.addTo(renderer);
 
     connect(model_, &StudioModel::viewChanged, this, &DisplayController::refresh);
-    connect(model_, &StudioModel::sceneChanged, this, &DisplayController::refresh);
+    connect(model_, &StudioModel::sceneChanged, this, [this] {
+        spheresFor_ = nullptr; // a new scene may live where the old one did
+        refresh();
+    });
     connect(model_, &StudioModel::buildFinished, this, [this] {
         previewDirty_ = true;
         refresh();
@@ -301,6 +304,42 @@ Camera DisplayController::currentCamera() const {
     return camera;
 }
 
+void DisplayController::placeLegend() {
+    // The free corner (bottom right, bottom left, top right) the fewest meshes' bounding
+    // spheres reach into:
+    // the legend covers as little of the scene as it can from this camera (issue 31 #9).
+    if (!legend_.visible() || !model_->scene() || spheresFor_ != model_->scene().get()) return;
+    const Camera camera = currentCamera();
+    const glm::dmat4 clip = camera.projection() * camera.view();
+    const double H = viewport_->frameHeight();
+    const double W = viewport_->height() > 0 ? H * viewport_->width() / viewport_->height() : H;
+    const QSize box = legend_.pixelSize();
+    const double pixelsPerUnit = H / (2.0 * std::tan(camera.fovY / 2.0));
+    const double bw = box.width() + 16.0, bh = box.height() + 16.0;
+    using Corner = ViewportLegend::Corner;
+    const Corner corners[3] = {Corner::BottomRight, Corner::BottomLeft, Corner::TopRight};
+    std::size_t under[3] = {0, 0, 0};
+    for (const glm::dvec4& s : spheres_) {
+        if (s.w < 0.0) continue;
+        const glm::dvec4 p = clip * glm::dvec4(glm::dvec3(s), 1.0);
+        if (p.w <= 0.0) continue;
+        const double x = (p.x / p.w * 0.5 + 0.5) * W, y = (p.y / p.w * 0.5 + 0.5) * H; // y up
+        // The sphere's radius on screen (p.w is the depth in front of the eye).
+        const double r = s.w * pixelsPerUnit / p.w;
+        const bool left = (x - r) < bw;
+        const bool right = (x + r) > W - bw;
+        const bool low = (y - r) < bh;
+        const bool high = (y + r) > H - bh;
+        under[0] += right && low;
+        under[1] += left && low;
+        under[2] += right && high;
+    }
+    int best = 0;
+    for (int c = 1; c < 3; ++c)
+        if (under[c] < under[best]) best = c;
+    legend_.setCorner(corners[best]);
+}
+
 void DisplayController::beforeRender() {
     const DisplayMode mode = model_->hasBuild() ? model_->view().mode : DisplayMode::Original;
     FrameStats stats;
@@ -308,24 +347,65 @@ void DisplayController::beforeRender() {
         updatePreview();
         return; // updatePreview reports the frame
     }
-    if (model_->scene()) {
-        // The original scene (also under the cluster colours): one draw per instance.
-        const SceneStats s = model_->scene()->stats();
-        stats.drawCalls = s.drawCalls;
-        stats.triangles = s.triangles;
-    }
+    if (model_->scene()) stats = originalFrame();
+    placeLegend();
     last_ = stats;
-    if (mode == DisplayMode::Clusters)
-        setOverlay(
-            cut_.size() == 1
-                ? tr("Level %1 of %2: 1 cluster").arg(model_->view().level).arg(model_->maxLevel())
-                : tr("Level %1 of %2: %3 clusters")
-                      .arg(model_->view().level)
-                      .arg(model_->maxLevel())
-                      .arg(cut_.size()));
-    else
-        setOverlay({});
+    setOverlay(mode == DisplayMode::Clusters ? clustersOverlay() : originalOverlay());
     Q_EMIT frameStats(stats);
+}
+
+FrameStats DisplayController::originalFrame() {
+    // The original scene (also under the cluster colours): one draw per instance in the view,
+    // culled as the HLOD preview culls (issue 31 #8: Algorithm 5's frustum test on bounding
+    // spheres), so the two overlays compare.
+    const Scene& scene = *model_->scene();
+    if (spheresFor_ != &scene) {
+        spheres_.clear();
+        spheres_.reserve(scene.instances.size());
+        for (Id i = 0; i < scene.instances.size(); ++i) {
+            const Aabb box = scene.instanceBounds(i);
+            spheres_.push_back(box.empty() ? glm::dvec4(0.0, 0.0, 0.0, -1.0)
+                                           : glm::dvec4(box.center(), 0.5 * box.diagonal()));
+        }
+        spheresFor_ = &scene;
+    }
+    const Frustum frustum = Frustum::fromCamera(currentCamera());
+    FrameStats stats;
+    for (Id i = 0; i < scene.instances.size(); ++i) {
+        const glm::dvec4& s = spheres_[i];
+        if (s.w < 0.0 || !frustum.intersectsSphere(glm::dvec3(s), s.w)) continue;
+        ++stats.drawCalls;
+        stats.triangles += scene.meshes[scene.instances[i].mesh].triangleCount();
+    }
+    return stats;
+}
+
+QString DisplayController::originalOverlay() const {
+    if (!model_->scene()) return {};
+    const SceneStats all = model_->scene()->stats();
+    return tr("Draw calls: %1 in view (of %2)\nTriangles: %3 in view (of %4)")
+        .arg(count(last_.drawCalls), count(all.drawCalls), count(last_.triangles),
+             count(all.triangles));
+}
+
+QString DisplayController::clustersOverlay() const {
+    // Counted as the Statistics' per-level table counts (ClusterNode::level exactly L), so the
+    // two agree; the cut also holds lower nodes no level-L cluster holds, said apart.
+    const int level = model_->view().level;
+    const ClusterTree& tree = *model_->built().build->tree;
+    const auto atLevel = static_cast<std::size_t>(std::count_if(
+        cut_.begin(), cut_.end(), [&](Id n) { return tree.nodes[n].level == level; }));
+    QString text = atLevel == 1
+                       ? tr("Level %1 of %2: 1 level-%1 node").arg(level).arg(model_->maxLevel())
+                       : tr("Level %1 of %2: %3 level-%1 nodes")
+                             .arg(level)
+                             .arg(model_->maxLevel())
+                             .arg(count(atLevel));
+    if (const std::size_t lower = cut_.size() - atLevel; lower > 0)
+        text += QLatin1Char('\n') + tr("+ %1 lower clusters and meshes in no level-%2 cluster")
+                                        .arg(count(lower))
+                                        .arg(level);
+    return text;
 }
 
 void DisplayController::updatePreview() {
@@ -343,6 +423,8 @@ void DisplayController::updatePreview() {
         updateLegend();
     }
     last_ = {result.drawCalls, result.triangles, result.nodesVisited};
+    if (model_->scene() && spheresFor_ != model_->scene().get()) originalFrame();
+    placeLegend();
     setOverlay(tr("Draw calls: %1\nTriangles: %2\nNodes visited: %3")
                    .arg(count(last_.drawCalls), count(last_.triangles), count(last_.nodesVisited)));
     Q_EMIT frameStats(last_);

@@ -73,7 +73,8 @@ public:
     QString overlayText() const;
     // The instances the selection highlight draws (sorted; empty when it is hidden).
     std::vector<Id> highlightedInstances() const;
-    // The legend's lines (empty when it is hidden).
+    // The legend's corner (ViewportLegend::Corner) and lines (empty when it is hidden).
+    ViewportLegend::Corner legendCorner() const { return legend_.corner(); }
     std::vector<ViewportLegend::Entry> legendEntries() const;
 
 Q_SIGNALS:
@@ -86,6 +87,15 @@ private:
     void beforeRender();
     void updatePreview();
     void setOverlay(const QString& text);
+    // Clusters mode: the level's node count (as the Statistics' table counts) and the lower
+    // nodes the cut carries up.
+    QString clustersOverlay() const;
+    // Original and Clusters modes: the scene's instances in the view frustum (culled as the
+    // HLOD preview culls), and the overlay that gives them next to the whole scene's.
+    FrameStats originalFrame();
+    QString originalOverlay() const;
+    // Puts the legend in the free corner with the fewest meshes under it.
+    void placeLegend();
     void updateLegend();
     vtkSmartPointer<vtkActor> makeActor(bool lit) const;
 
@@ -99,10 +109,12 @@ private:
     ViewportLegend legend_;
     std::unique_ptr<ClusterColoring> coloring_;
     std::unique_ptr<TexturedPreview> textured_; // atlas proxies and textured leaves
-    const void* coloringFor_ = nullptr; // the build the colouring was made for
+    const void* coloringFor_ = nullptr;         // the build the colouring was made for
     std::vector<Id> cut_;
     std::vector<Id> drawList_;
     bool previewDirty_ = true;
+    std::vector<glm::dvec4> spheres_;  // per instance: bounding sphere (w < 0: no geometry)
+    const void* spheresFor_ = nullptr; // the scene spheres_ were made for
     FrameStats last_;
 };
 

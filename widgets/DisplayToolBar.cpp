@@ -28,12 +28,10 @@ DisplayToolBar::DisplayToolBar(StudioModel* model, QWidget* parent)
     };
     original_ = mode(tr("Original"), QStringLiteral("1"), tr("Show the original scene"),
                      DisplayMode::Original);
-    clusters_ =
-        mode(tr("Clusters"), QStringLiteral("2"),
-             tr("Colour the meshes by their cluster at the chosen level"), DisplayMode::Clusters);
-    hlod_ = mode(tr("HLOD preview"), QStringLiteral("3"),
-                 tr("Draw what an engine draws for this camera: proxies and leaves"),
-                 DisplayMode::Hlod);
+    clustersTip_ = tr("Colour the meshes by their cluster at the chosen level");
+    clusters_ = mode(tr("Clusters"), QStringLiteral("2"), clustersTip_, DisplayMode::Clusters);
+    hlodTip_ = tr("Draw what an engine draws for this camera: proxies and leaves");
+    hlod_ = mode(tr("HLOD preview"), QStringLiteral("3"), hlodTip_, DisplayMode::Hlod);
     addSeparator();
     addWidget(new QLabel(tr(" Level "), this));
     level_ = new QSlider(Qt::Horizontal, this);
@@ -82,6 +80,14 @@ void DisplayToolBar::load() {
     const bool built = model_->hasBuild();
     clusters_->setEnabled(built);
     hlod_->setEnabled(built);
+    // Greyed modes say why (issue 31 #4): they show a build.
+    const QString needsBuild = model_->scene()
+                                   ? tr("Build the HLOD first (Build ▸ Build HLOD, Ctrl+B)")
+                                   : tr("Open a scene and build its HLOD first");
+    clusters_->setToolTip(built ? tr("%1 (2)").arg(clustersTip_)
+                                : tr("%1 (2). %2").arg(clustersTip_, needsBuild));
+    hlod_->setToolTip(built ? tr("%1 (3)").arg(hlodTip_)
+                            : tr("%1 (3). %2").arg(hlodTip_, needsBuild));
     (v.mode == DisplayMode::Clusters ? clusters_
      : v.mode == DisplayMode::Hlod   ? hlod_
                                      : original_)

@@ -45,6 +45,7 @@ private:
     QCheckBox* selectionOnly_ = nullptr;
     QCheckBox* tint_ = nullptr;
     bool loading_ = false;
+    QString clustersTip_, hlodTip_; // what the Clusters and HLOD preview modes show
 };
 
 } // namespace hlod::widgets

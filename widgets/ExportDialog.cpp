@@ -1,5 +1,6 @@
 // The export dialog (see ExportDialog.h).
 #include "widgets/ExportDialog.h"
+#include "widgets/NumberFormat.h"
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
@@ -155,10 +156,9 @@ void ExportDialog::onFinished() {
     const QString dir = QString::fromStdString(out->exported->output.string());
     bar_->setRange(0, 1000);
     bar_->setValue(1000);
-    status_->setText(
-        tr("Wrote %1 files (%2) to %3")
-            .arg(written.files)
-            .arg(QLocale().formattedDataSize(static_cast<qint64>(written.bytes)), dir));
+    status_->setText(tr("Wrote %1 files (%2) to %3")
+                         .arg(written.files)
+                         .arg(formatMegabytes(written.bytes), dir));
     Q_EMIT exported(dir, static_cast<qint64>(written.files), static_cast<qint64>(written.bytes));
     accept();
 }

@@ -35,7 +35,10 @@ glm::vec3 displayColor(const glm::vec4& linear) { return glm::vec3(linearToDispl
 
 glm::vec3 categoryColor(std::uint32_t index) {
     // Hue steps by the golden ratio conjugate: consecutive ids land far apart on the wheel.
-    const double hue = std::fmod(0.13 + index * 0.6180339887498949, 1.0) * 6.0;
+    // The hues span red through blue-violet (346°..267°) only: magenta and pink are the
+    // selection highlight's (issue 31 #9), which no category colour comes near.
+    const double turn = std::fmod(0.13 + index * 0.6180339887498949, 1.0);
+    const double hue = std::fmod(0.961 + turn * 0.78, 1.0) * 6.0;
     const double s = 0.62, v = 0.92;
     const int sector = static_cast<int>(hue) % 6;
     const double f = hue - std::floor(hue);

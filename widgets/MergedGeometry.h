@@ -70,7 +70,8 @@ glm::vec3 displayColor(const glm::vec4& linear);
 void recolor(vtkPolyData& poly, const VertexRange& range, const glm::vec3& color);
 
 // Distinct, stable colours for categories (clusters by node id, depths): golden-ratio hue
-// steps at fixed saturation and value, so neighbouring ids differ clearly.
+// steps at fixed saturation and value, so neighbouring ids differ clearly. Hues 346°..267°
+// only: magenta and pink are kept for the selection highlight (ClusterDisplay.h).
 glm::vec3 categoryColor(std::uint32_t index);
 
 } // namespace hlod::widgets

@@ -1,6 +1,7 @@
 // Number formatting for the editor's tables (see NumberFormat.h).
 #include "widgets/NumberFormat.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QCoreApplication>
@@ -30,21 +31,29 @@ QString formatCount(std::uint64_t n) {
     return QCoreApplication::translate("NumberFormat", "%1 M").arg(formatSignificant(n / 1e6));
 }
 
-QString formatVolume(double v) {
-    if (!(v > 0.0)) return QStringLiteral("0 m³");
-    if (v >= 1.0) return formatSignificant(v) + QStringLiteral(" m³");
-    if (v >= 1e-3) return formatSignificant(v * 1e3) + QStringLiteral(" L");
-    if (v >= 1e-6) return formatSignificant(v * 1e6) + QStringLiteral(" cm³");
-    return formatSignificant(v * 1e9) + QStringLiteral(" mm³");
+namespace {
+
+// Three significant digits at any size, no exponent, no trailing zeros.
+QString threeDigits(double x) {
+    if (!(x > 0.0)) return QStringLiteral("0");
+    if (x >= 0.995) return formatSignificant(x);
+    const int decimals = std::min(12, 2 - static_cast<int>(std::floor(std::log10(x))));
+    const QLocale locale;
+    QString text = locale.toString(x, 'f', decimals);
+    const QChar point = locale.decimalPoint().at(0);
+    while (text.endsWith(QLatin1Char('0')))
+        text.chop(1);
+    if (text.endsWith(point)) text.chop(1);
+    return text;
 }
 
-QString formatLength(double m) {
-    if (!(m > 0.0)) return QStringLiteral("0 m");
-    if (m >= 1000.0) return formatSignificant(m / 1000.0) + QStringLiteral(" km");
-    if (m >= 1.0) return formatSignificant(m) + QStringLiteral(" m");
-    if (m >= 0.01) return formatSignificant(m * 100.0) + QStringLiteral(" cm");
-    return formatSignificant(m * 1000.0) + QStringLiteral(" mm");
-}
+} // namespace
+
+QString formatVolume(double v) { return threeDigits(v); }
+
+QString formatLength(double length) { return threeDigits(length); }
+
+QString lengthUnit() { return QCoreApplication::translate("NumberFormat", "scene units"); }
 
 QString formatMegabytes(std::uint64_t bytes) {
     const double mb = static_cast<double>(bytes) / 1e6;

@@ -12,6 +12,7 @@ void SceneTreeModel::setScene(std::shared_ptr<const Scene> scene) {
     scene_ = std::move(scene);
     counts_.clear();
     rowInParent_.clear();
+    excluded_.clear();
     if (scene_) {
         const std::size_t n = scene_->nodes.size();
         counts_.assign(n, {});
@@ -51,6 +52,25 @@ void SceneTreeModel::setScene(std::shared_ptr<const Scene> scene) {
         }
     }
     endResetModel();
+}
+
+void SceneTreeModel::setExcluded(std::vector<Id> instances) {
+    std::vector<std::size_t> perNode;
+    if (scene_ && !instances.empty()) {
+        perNode.assign(scene_->nodes.size(), 0);
+        for (Id i : instances)
+            if (i < scene_->instances.size() && scene_->instances[i].node < perNode.size())
+                ++perNode[scene_->instances[i].node];
+    }
+    if (perNode == excluded_) return;
+    excluded_ = std::move(perNode);
+    // Every row's name and tooltip may have changed: tell the views to repaint all of them.
+    Q_EMIT layoutAboutToBeChanged();
+    Q_EMIT layoutChanged();
+}
+
+std::size_t SceneTreeModel::excludedMeshes(Id node) const {
+    return node < excluded_.size() ? excluded_[node] : 0;
 }
 
 Id SceneTreeModel::nodeOf(const QModelIndex& index) const {
@@ -96,8 +116,10 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
     case Qt::DisplayRole:
         switch (index.column()) {
         case NameColumn: {
-            const QString name = QString::fromStdString(scene_->nodes[node].name);
-            return name.isEmpty() ? tr("(unnamed %1)").arg(node) : name;
+            QString name = QString::fromStdString(scene_->nodes[node].name);
+            if (name.isEmpty()) name = tr("(unnamed %1)").arg(node);
+            const std::size_t out = excludedMeshes(node);
+            return out > 0 && out == c.ownMeshes ? tr("%1 (excluded)").arg(name) : name;
         }
         case MeshesColumn:
             return locale.toString(static_cast<qulonglong>(c.meshes));
@@ -112,11 +134,17 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const {
     case Qt::ToolTipRole:
         return tr("Node %1: %2 meshes, %3 triangles on this node; %4 meshes, %5 triangles "
                   "including children")
-            .arg(node)
-            .arg(locale.toString(static_cast<qulonglong>(c.ownMeshes)))
-            .arg(locale.toString(static_cast<qulonglong>(c.ownTriangles)))
-            .arg(locale.toString(static_cast<qulonglong>(c.meshes)))
-            .arg(locale.toString(static_cast<qulonglong>(c.triangles)));
+                   .arg(node)
+                   .arg(locale.toString(static_cast<qulonglong>(c.ownMeshes)))
+                   .arg(locale.toString(static_cast<qulonglong>(c.ownTriangles)))
+                   .arg(locale.toString(static_cast<qulonglong>(c.meshes)))
+                   .arg(locale.toString(static_cast<qulonglong>(c.triangles))) +
+               (excludedMeshes(node) > 0
+                    ? QLatin1Char('\n') +
+                          tr("%1 of its meshes excluded from HLOD (drawn as themselves, never in "
+                             "a proxy)")
+                              .arg(excludedMeshes(node))
+                    : QString());
     case NodeIdRole:
         return QVariant::fromValue(static_cast<uint>(node));
     default:

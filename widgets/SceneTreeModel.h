@@ -47,10 +47,18 @@ public:
     };
     const Counts& counts(Id node) const { return counts_[node]; }
 
+    // The instances the shown branch's Cluster node excludes from HLOD (sorted): a node whose
+    // own meshes are all excluded reads "name (excluded)" (issue 31 #10), one with some of
+    // them says how many in its tooltip.
+    void setExcluded(std::vector<Id> instances);
+    // Own meshes of `node` that are excluded.
+    std::size_t excludedMeshes(Id node) const;
+
 private:
     std::shared_ptr<const Scene> scene_;
     std::vector<Counts> counts_;
-    std::vector<int> rowInParent_; // position of each node among its parent's children
+    std::vector<int> rowInParent_;      // position of each node among its parent's children
+    std::vector<std::size_t> excluded_; // per node: own meshes excluded (empty: none)
 };
 
 } // namespace hlod::widgets

@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include "pipeline/proxy/BakeStats.h"
+#include "widgets/BuildWarnings.h"
 #include "widgets/DisplayController.h"
 #include "widgets/NumberFormat.h"
 #include "widgets/StatsPlot.h"
@@ -63,18 +64,11 @@ void fitSize(QTableWidget* table) {
     table->setMinimumWidth(w + 2 * table->frameWidth());
 }
 
-// "0.12–1.1 m": both ends in the unit of the larger (formatLength's), so they compare at a
-// glance and the column stays narrow.
+// "0.12–1.12": both ends in scene units (the column header names them).
 QString budgetRange(const LevelRow& row) {
     const QString hi = formatLength(row.budgetMax);
-    if (formatLength(row.budgetMin) == hi) return hi;
-    const qsizetype space = hi.lastIndexOf(QLatin1Char(' '));
-    const QString unit = hi.mid(space + 1);
-    const double scale = unit == QLatin1String("km")   ? 1e-3
-                         : unit == QLatin1String("cm") ? 1e2
-                         : unit == QLatin1String("mm") ? 1e3
-                                                       : 1.0;
-    return formatSignificant(row.budgetMin * scale) + QStringLiteral("–") + hi;
+    const QString lo = formatLength(row.budgetMin);
+    return lo == hi ? hi : lo + QStringLiteral("–") + hi;
 }
 
 QLabel* note(QWidget* parent) {
@@ -89,7 +83,12 @@ QLabel* note(QWidget* parent) {
 StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), model_(model) {
     auto* content = new QWidget;
     table_ = makeTable(RowCount, ColumnCount, content);
-    table_->setHorizontalHeaderLabels({tr("Triangles"), tr("Vertices"), tr("Meshes"), tr("Size")});
+    table_->setHorizontalHeaderLabels(
+        {tr("Triangles"), tr("Vertices"), tr("Meshes"), tr("Geometry")});
+    table_->horizontalHeaderItem(SizeColumn)
+        ->setToolTip(tr("Bytes of the geometry as the package's GLB files store it (MB = 10⁶ "
+                        "bytes); the package on disk (below, and in Compare) adds textures, "
+                        "tile files and file-system blocks"));
     table_->setVerticalHeaderLabels({tr("Original"), tr("HLOD")});
     table_->verticalHeaderItem(HlodRow)->setToolTip(
         tr("The original meshes plus every proxy: what the package stores (as in the thesis' "
@@ -97,13 +96,17 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     note_ = note(content);
     levels_ = makeTable(0, LevelColumnCount, content);
     levels_->verticalHeader()->hide();
-    levels_->setHorizontalHeaderLabels(
-        {tr("Level"), tr("Nodes"), tr("Children"), tr("Budget"), tr("Triangles"), tr("Share")});
+    levels_->setHorizontalHeaderLabels({tr("Level"), tr("Nodes"), tr("Children"),
+                                        tr("Budget\n(%1)").arg(lengthUnit()), tr("Triangles"),
+                                        tr("Share")});
     const QStringList tips{tr("Level in the tree: 0 holds the original meshes"),
-                           tr("Clusters (level 0: meshes) on this level"),
+                           tr("Nodes whose level is exactly this one (level 0: meshes). The "
+                              "viewport's Clusters mode counts the same, and says apart the "
+                              "lower nodes no cluster of the level holds"),
                            tr("Mean number of children of this level's clusters"),
                            tr("Error budget: how far a proxy of this level may deviate from what "
-                              "it replaces (pixel error × cluster diameter / screen size)"),
+                              "it replaces (pixel error × cluster diameter / screen size), in %1")
+                               .arg(lengthUnit()),
                            tr("Triangles of all proxies of this level (level 0: of the original "
                               "meshes)"),
                            tr("Those triangles as a share of the original scene's")};
@@ -115,6 +118,12 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     branch_->setObjectName(QStringLiteral("StatsBranch"));
     branch_->setWordWrap(true);
     branch_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Above the scrolled part, as wide as the dock: always in sight, never cut (issue 31 #7).
+    warning_ = note(this);
+    warning_->setObjectName(QStringLiteral("StatsWarning"));
+    warning_->setStyleSheet(QStringLiteral("QLabel { background: #fff1c2; color: #5a3d00; "
+                                           "border: 1px solid #d9a400; padding: 4px; }"));
+    warning_->hide();
     auto* column = new QVBoxLayout(content);
     column->setContentsMargins(0, 0, 0, 0);
     for (QWidget* w :
@@ -130,6 +139,7 @@ StatsPanel::StatsPanel(StudioModel* model, QWidget* parent) : QWidget(parent), m
     plot_->setMinimumHeight(90);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(warning_);
     layout->addWidget(scroll, 3);
     layout->addWidget(plot_, 1);
     connect(model_, &StudioModel::sceneChanged, this, &StatsPanel::refresh);
@@ -167,9 +177,10 @@ void StatsPanel::refresh() {
         table_->setItem(row, TrianglesColumn, numberItem(text(s ? s->triangles : 0)));
         table_->setItem(row, VerticesColumn, numberItem(text(s ? s->vertices : 0)));
         table_->setItem(row, MeshesColumn, numberItem(text(s ? s->meshes : 0)));
-        table_->setItem(row, SizeColumn,
-                        numberItem(s ? formatMegabytes(s->bytes) : QStringLiteral("–"),
-                                   tr("Geometry as the package's GLB files store it")));
+        table_->setItem(
+            row, SizeColumn,
+            numberItem(s ? formatMegabytes(s->bytes) : QStringLiteral("–"),
+                       tr("Geometry as the package's GLB files store it (MB = 10⁶ bytes)")));
     };
     const auto& scene = model_->scene();
     GeometryStats original;
@@ -180,6 +191,10 @@ void StatsPanel::refresh() {
     fitSize(table_);
     fitSize(levels_);
     plot_->clear();
+    const QString warning =
+        model_->hasBuild() ? dissolveWarning(model_->built(), model_->clusterLabels()) : QString();
+    warning_->setText(warning);
+    warning_->setVisible(!warning.isEmpty());
     if (!model_->hasBuild()) {
         note_->setText(scene ? tr("Build the HLOD (Build ▸ Build HLOD, Ctrl+B) to compare.")
                              : QString());
@@ -208,13 +223,21 @@ void StatsPanel::refresh() {
         tr("(a proxy must hold at most %1 of the triangles it replaces; a dissolved cluster's "
            "children hang from its parent).")
             .arg(percent(ratio)));
-    summary_->setText(tr("%1: %2 nodes, height %3; %4 proxies baked, %5 reused; built in %6 s")
+    QString package;
+    if (b.package.files > 0)
+        package = QLatin1Char(' ') + tr("Package on disk: %1 in %2 files (what hlod build and "
+                                        "Compare report; Geometry above is the GLB geometry "
+                                        "alone).")
+                                         .arg(formatMegabytes(b.package.bytesOnDisk))
+                                         .arg(b.package.files);
+    summary_->setText(tr("%1: %2 nodes, height %3; %4 proxies baked, %5 reused; built in %6 s.")
                           .arg(QString::fromStdString(b.hlod.version))
                           .arg(b.build->tree->nodes.size())
                           .arg(b.build->tree->height())
                           .arg(bake.baked)
                           .arg(bake.reused)
-                          .arg(locale.toString(b.seconds, 'f', 2)));
+                          .arg(locale.toString(b.seconds, 'f', 2)) +
+                      package);
 }
 
 void StatsPanel::refreshLevels() {

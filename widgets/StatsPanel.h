@@ -46,6 +46,8 @@ public:
     QLabel* summaryLabel() const { return summary_; }
     // "Branch: Cluster #5 → Bake #6 (up to date)".
     QLabel* branchLabel() const { return branch_; }
+    // At the top, shown only when the build surprises (BuildWarnings.h dissolveWarning).
+    QLabel* warningLabel() const { return warning_; }
     StatsPlot* plot() const { return plot_; }
 
     void showFrame(const hlod::widgets::FrameStats& stats);
@@ -62,6 +64,7 @@ private:
     QLabel* economy_ = nullptr;
     QLabel* summary_ = nullptr;
     QLabel* branch_ = nullptr;
+    QLabel* warning_ = nullptr;
     StatsPlot* plot_ = nullptr;
 };
 

@@ -8,6 +8,7 @@
 #include <QFontMetrics>
 #include <QPainter>
 #include <vtkActor2D.h>
+#include <vtkCoordinate.h>
 #include <vtkImageData.h>
 #include <vtkImageMapper.h>
 #include <vtkNew.h>
@@ -28,7 +29,7 @@ QColor toQColor(const glm::vec3& c) { return QColor::fromRgbF(c.r, c.g, c.b); }
 // The legend box: swatches and lines of text on the overlay's dark translucent background.
 QImage paintLegend(const std::vector<ViewportLegend::Entry>& entries, double scale) {
     QFont font = QApplication::font();
-    font.setPixelSize(14);
+    font.setPixelSize(13);
     const QFontMetrics metrics(font);
     const int line = std::max(metrics.height(), kSwatch) + 3;
     int width = 0;
@@ -69,7 +70,11 @@ ViewportLegend::ViewportLegend()
     mapper->SetColorWindow(255.0); // the image's bytes as they are
     mapper->SetColorLevel(127.5);
     actor_->SetMapper(mapper);
+    // Placed at an offset in pixels from a corner of the viewport (place()).
+    reference_ = vtkSmartPointer<vtkCoordinate>::New();
+    reference_->SetCoordinateSystemToNormalizedViewport();
     actor_->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    actor_->GetPositionCoordinate()->SetReferenceCoordinate(reference_);
     actor_->PickableOff();
     actor_->VisibilityOff();
 }
@@ -103,7 +108,21 @@ void ViewportLegend::setEntries(std::vector<Entry> entries, double scale) {
         std::memcpy(out + static_cast<std::size_t>(row) * w * 4, flipped.constScanLine(row),
                     static_cast<std::size_t>(w) * 4);
     pixels_->Modified();
-    actor_->SetPosition(kMargin * scale_, kMargin * scale_);
+    place();
+}
+
+void ViewportLegend::setCorner(Corner corner) {
+    if (corner == corner_) return;
+    corner_ = corner;
+    place();
+}
+
+void ViewportLegend::place() {
+    const double w = image_.width(), h = image_.height(), m = kMargin * scale_;
+    const bool right = corner_ != Corner::BottomLeft;
+    const bool top = corner_ == Corner::TopRight;
+    reference_->SetValue(right ? 1.0 : 0.0, top ? 1.0 : 0.0);
+    actor_->SetPosition(right ? -w - m : m, top ? -h - m : m);
 }
 
 } // namespace hlod::widgets

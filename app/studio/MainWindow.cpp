@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -163,6 +165,14 @@ void MainWindow::createActions() {
         viewMenu_->addAction(dock->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* guide = help->addAction(tr("&User Guide (README)"), this, &MainWindow::openUserGuide);
+    guide->setObjectName(QStringLiteral("actionUserGuide"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    guide->setStatusTip(tr("Open the README, the user guide of HLOD Studio"));
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    keys->setObjectName(QStringLiteral("actionShortcuts"));
+    keys->setStatusTip(tr("Every shortcut of the menus and the viewport"));
+    help->addSeparator();
     help->addAction(tr("&About HLOD Studio"), this, &MainWindow::showAbout);
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
 }
@@ -351,6 +361,77 @@ void MainWindow::showAbout() {
                  QString::fromLatin1(vtkVersion::GetVTKVersion()), gl));
 }
 
+QString MainWindow::userGuidePath() {
+    // Installed by the .deb; next to the binary's source tree in a build (build/app/..).
+    const QString app = QCoreApplication::applicationDirPath();
+    for (const QString& candidate : {app + QStringLiteral("/../share/doc/hlod-studio/README.md"),
+                                     QStringLiteral("/usr/share/doc/hlod-studio/README.md"),
+                                     app + QStringLiteral("/../../README.md")})
+        if (QFileInfo(candidate).isFile()) return QFileInfo(candidate).canonicalFilePath();
+    return {};
+}
+
+void MainWindow::openUserGuide() {
+    const QString path = userGuidePath();
+    if (!path.isEmpty() && QDesktopServices::openUrl(QUrl::fromLocalFile(path))) {
+        log_->info(tr("Opened the user guide %1").arg(path));
+        return;
+    }
+    const QString text =
+        path.isEmpty()
+            ? tr("The user guide is README.md of HLOD Studio (installed as "
+                 "/usr/share/doc/hlod-studio/README.md by the .deb); it was not found here.")
+            : tr("No program opens %1 here; open it in a text editor or a Markdown viewer.")
+                  .arg(path);
+    log_->warning(text);
+    if (screenshotPath_.isEmpty()) QMessageBox::information(this, tr("User Guide"), text);
+}
+
+QString MainWindow::shortcutsHtml() const {
+    // Collected from the menus (what they hold now), then the viewport's own keys and mouse.
+    QString html = tr("<h3>Keyboard shortcuts</h3><table cellspacing='0' cellpadding='2'>");
+    auto row = [&](const QString& keys, const QString& what) {
+        html += QStringLiteral("<tr><td><b>%1</b></td><td>&nbsp;&nbsp;%2</td></tr>")
+                    .arg(keys.toHtmlEscaped(), what.toHtmlEscaped());
+    };
+    std::function<void(QMenu*, const QString&)> walk = [&](QMenu* menu, const QString& path) {
+        for (QAction* action : menu->actions()) {
+            const QString name =
+                path + QStringLiteral(" ▸ ") + QString(action->text()).remove(QLatin1Char('&'));
+            if (action->menu()) {
+                walk(action->menu(), name);
+                continue;
+            }
+            if (!action->shortcut().isEmpty())
+                row(action->shortcut().toString(QKeySequence::NativeText), name);
+        }
+    };
+    for (QAction* top : menuBar()->actions())
+        if (top->menu()) walk(top->menu(), QString(top->text()).remove(QLatin1Char('&')));
+    html += QStringLiteral("</table><h3>%1</h3><table cellspacing='0' cellpadding='2'>")
+                .arg(tr("Viewport"));
+    row(tr("Left drag"), tr("Orbit"));
+    row(tr("Middle drag, Shift+left drag"), tr("Pan"));
+    row(tr("Wheel, right drag"), tr("Zoom"));
+    row(tr("Click"), tr("Select the mesh or cluster under the cursor"));
+    row(tr("Ctrl+click"), tr("Add or remove the cluster under the cursor"));
+    row(tr("Right click"), tr("The cluster edit menu"));
+    html += QStringLiteral("</table>");
+    const QString guide = userGuidePath();
+    html += tr("<p>More in the user guide: Help ▸ User Guide (%1).</p>")
+                .arg(guide.isEmpty() ? QStringLiteral("README.md") : guide.toHtmlEscaped());
+    return html;
+}
+
+void MainWindow::showShortcuts() {
+    auto* box = new QMessageBox(QMessageBox::NoIcon, tr("Keyboard Shortcuts"), shortcutsHtml(),
+                                QMessageBox::Close, this);
+    box->setObjectName(QStringLiteral("ShortcutsDialog"));
+    box->setTextFormat(Qt::RichText);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
     const QList<QUrl> urls = event->mimeData()->urls();
     const bool local = !urls.isEmpty() && std::all_of(urls.begin(), urls.end(), [](const QUrl& u) {
@@ -444,6 +525,7 @@ void MainWindow::onLoaded(const LoadedScene& result) {
     adoptLoadedScene(result);
     const std::shared_ptr<const hlod::Scene>& loadedScene = model_->scene();
     treeModel_->setScene(loadedScene);
+    markExcludedMeshes();
     tree_->expandToDepth(0);
     if (viewport_) {
         firstFramePending_ = true;

@@ -37,6 +37,7 @@
 // (after saving the window as it looks then).
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -133,6 +134,12 @@ public:
     // Saves to the current project path (asks for one when untitled); false when not saved.
     bool saveProject();
     bool saveProjectAs();
+    // Saves the document (with the view state: display, shown branch, camera) to `path`, as
+    // both do once they have a path; false (and a message) when it cannot be written.
+    bool saveProjectTo(const QString& path);
+    // Where Save Project As proposes to save: the project's path; for an untitled one the
+    // scene's name in the folder of the last project saved, else Documents.
+    QString defaultProjectPath() const;
     hlod::widgets::LogView* log() const { return log_; }
     const std::shared_ptr<const hlod::Scene>& scene() const;
 
@@ -150,6 +157,7 @@ private:
     void createHlodDocks();
     void createBuildMenu();
     void createBuildStatus();
+    void markExcludedMeshes();
     void onBuildStarted();
     void onBuildProgress(const QString& stage, qint64 done, qint64 total, const QString& detail);
     void onShownBuildChanged();
@@ -181,6 +189,16 @@ private:
     // startup view that shows it again after opening.
     void storeViewState();
     StartupView viewFromProject() const;
+    // The camera kept in the project's view state ("camera"; absent in older projects), applied
+    // once the opened project's view is shown (applyStartupView).
+    struct SavedCamera {
+        std::array<double, 3> position{}, focalPoint{}, viewUp{};
+        double viewAngle = 30.0;
+    };
+    std::optional<SavedCamera> cameraFromProject() const;
+    void applySavedCamera();
+    // A non-blocking message box saying an export finished (not in screenshot mode).
+    void exportedMessage(const QString& title, const QString& text);
     // onLoaded for a project: adopt its document, then build and show it.
     void adoptPendingProject(const QStringList& files);
     // MainWindowCompare.cpp: the comparison window (View menu, scene and document changes,
@@ -194,7 +212,18 @@ private:
     void openDialog();
     void openFolderDialog();
     void showAbout();
+    void openUserGuide();
 
+public:
+    // Help ▸ Keyboard Shortcuts: every menu shortcut (collected from the menus) and the
+    // viewport's mouse and keys, with the user guide's path; the dialog shows this text.
+    QString shortcutsHtml() const;
+    void showShortcuts();
+    // README.md, the user guide: installed (share/doc/hlod-studio) or in the source tree;
+    // empty when neither is found.
+    static QString userGuidePath();
+
+private:
     void onLoadStarted(const QStringList& files);
     void onLoadProgress(const QString& stage, qint64 done, qint64 total);
     void onLoaded(const hlod::widgets::LoadedScene& result);
@@ -233,7 +262,9 @@ private:
         bool recovered = false;
     };
     std::unique_ptr<PendingProject> pendingProject_; // read, waiting for its scene to load
+    std::optional<SavedCamera> pendingCamera_;       // an opened project's, until shown
     bool firstBuildOfScene_ = true;                  // the next finished build is the scene's first
+    QString lastWarning_; // the last build's dissolve warning (logged when it changes)
     hlod::widgets::DisplayToolBar* toolBar_ = nullptr;
     QLabel* buildLabel_ = nullptr;
     QProgressBar* buildBar_ = nullptr;

@@ -21,6 +21,7 @@
 #include <QTreeView>
 
 #include "widgets/BranchBox.h"
+#include "widgets/BuildWarnings.h"
 #include "widgets/ClusterTreeExpansion.h"
 #include "widgets/ClusterTreeModel.h"
 #include "widgets/DisplayController.h"
@@ -47,6 +48,10 @@ void MainWindow::createHlodDocks() {
     clusterTree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     clusterTree_->header()->setSectionResizeMode(hlod::widgets::ClusterTreeModel::NameColumn,
                                                  QHeaderView::Stretch);
+    // Long names keep their end ("… (excluded)") and rows indent less: names stay readable
+    // in the dock's default width (issue 31 #10).
+    clusterTree_->setTextElideMode(Qt::ElideMiddle);
+    clusterTree_->setIndentation(14);
     treeTabs_->addTab(clusterTree_, tr("Clusters"));
     new hlod::widgets::ClusterTreeExpansion(clusterTree_, clusterModel_, this);
 
@@ -74,9 +79,21 @@ void MainWindow::createHlodDocks() {
         treeTabs_->setCurrentWidget(tree_);
     });
     new hlod::widgets::SelectionSync(model_, tree_, treeModel_, clusterTree_, clusterModel_, this);
+    connect(session_, &hlod::widgets::ProjectSession::documentChanged, this,
+            &MainWindow::markExcludedMeshes);
+    connect(model_, &StudioModel::shownBakeChanged, this, &MainWindow::markExcludedMeshes);
     if (display_)
         connect(display_, &hlod::widgets::DisplayController::frameStats, stats_,
                 &hlod::widgets::StatsPanel::showFrame);
+}
+
+void MainWindow::markExcludedMeshes() {
+    // The Scene tab marks the meshes the shown branch excludes, as the document says now.
+    const hlod::NodeId cluster = model_->shownCluster();
+    const hlod::PipelineGraph& g = session_->document().graph();
+    treeModel_->setExcluded(treeModel_->scene() && cluster != hlod::kNoNode && g.hasNode(cluster)
+                                ? g.node(cluster).edits.excluded
+                                : std::vector<hlod::Id>{});
 }
 
 void MainWindow::createBuildMenu() {
@@ -116,7 +133,6 @@ void MainWindow::createBuildStatus() {
     buildBar_->setMaximumWidth(180);
     buildBar_->setRange(0, 1000);
     cancelButton_ = new QPushButton(tr("Cancel"));
-    cancelButton_->setToolTip(tr("Stop the running build; the previous HLOD stays"));
     connect(cancelButton_, &QPushButton::clicked, model_, &StudioModel::cancelBuild);
     statusBar()->addWidget(buildLabel_);
     statusBar()->addWidget(buildBar_);
@@ -131,6 +147,9 @@ void MainWindow::onBuildStarted() {
                        static_cast<QWidget*>(cancelButton_)})
         w->show();
     cancelAction_->setEnabled(true);
+    cancelButton_->setToolTip(model_->hasBuild()
+                                  ? tr("Stop the running build; the HLOD shown now stays")
+                                  : tr("Stop the running build (nothing has been built yet)"));
     QStringList targets;
     for (hlod::NodeId id : model_->runTargets()) {
         const hlod::PipelineGraph& g = session_->document().graph();
@@ -165,9 +184,14 @@ void MainWindow::onShownBuildChanged() {
     const hlod::widgets::BuiltHlod& built = model_->built();
     clusterModel_->setBuild(built.scene, built.build, model_->clusterLabels());
     if (firstBuildOfScene_) {
-        // Later builds (edits, parameters, other branches) keep the level the user chose.
+        // Later builds (edits, parameters, other branches) keep the level and mode the user
+        // chose. The first shows what was built: the HLOD preview (issue 31 #4), unless the
+        // command line or the project asks for a mode (applyStartupView sets it next).
         clusterTree_->expandToDepth(0);
         model_->setLevel(model_->suggestedLevel());
+        if (model_->view().mode == hlod::widgets::DisplayMode::Original &&
+            !(startupPending_ && startup_.mode))
+            model_->setMode(hlod::widgets::DisplayMode::Hlod);
         firstBuildOfScene_ = false;
     }
 }
@@ -188,6 +212,14 @@ void MainWindow::onBuildFinished() {
                 .arg(locale.toString(built.build->bake->seconds, 'f', 2))
                 .arg(built.build->bake->baked)
                 .arg(built.build->bake->reused));
+        // Visible where one looks after a build, not only at the bottom of Statistics.
+        // Once per new warning: every rebuild of the same tree would repeat it.
+        const QString warning = hlod::widgets::dissolveWarning(built, model_->clusterLabels());
+        if (!warning.isEmpty() && warning != lastWarning_) {
+            log_->warning(warning);
+            statusBar()->showMessage(warning, 15000);
+        }
+        lastWarning_ = warning;
     }
     if (startupPending_) applyStartupView();
 }
@@ -211,7 +243,11 @@ void MainWindow::hideBuildProgress() {
 
 void MainWindow::onBuildCancelled() {
     hideBuildProgress();
-    log_->warning(tr("HLOD build cancelled; the previous result stays"));
+    // Only a build that exists can stay (issue 31 #3).
+    log_->warning(model_->hasBuild()
+                      ? tr("HLOD build cancelled; the previous result stays")
+                      : tr("HLOD build cancelled; nothing has been built yet (Build ▸ Build "
+                           "HLOD, Ctrl+B, starts again)"));
     if (!screenshotPath_.isEmpty()) exitScreenshotMode(1, tr("the build was cancelled"));
 }
 
@@ -236,6 +272,7 @@ void MainWindow::applyStartupView() {
     hlod::widgets::DisplayMode mode;
     if (startup_.mode && hlod::widgets::displayModeFromString(*startup_.mode, mode))
         model_->setMode(mode);
+    applySavedCamera();
     screenshotWhenReady();
 }
 

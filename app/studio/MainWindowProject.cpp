@@ -7,6 +7,9 @@
 // state.
 #include "MainWindow.h"
 
+#include <array>
+#include <cmath>
+
 #include <QAction>
 #include <QCoreApplication>
 #include <QDir>
@@ -14,14 +17,20 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
 
 #include "pipeline/doc/ProjectFile.h"
 #include "pipeline/graph/Parameters.h"
 #include "widgets/ExportDialog.h"
 #include "widgets/LogView.h"
+#include "widgets/NumberFormat.h"
 #include "widgets/SceneLoader.h"
 #include "widgets/StudioModel.h"
+#include "widgets/Viewport.h"
 #include "widgets/doc/ProjectSession.h"
 #include "widgets/graph/PipelineEditor.h"
 
@@ -61,6 +70,22 @@ void MainWindow::addProjectActions(QMenu* file) {
     auto updateExport = [this] {
         const bool idle = model_->scene() && !model_->building();
         exportAction_->setEnabled(idle && model_->shownBake() != hlod::kNoNode);
+        // Which Export node it writes (issue 31 #11), or that it adds one.
+        const hlod::PipelineGraph& g = session_->document().graph();
+        hlod::NodeId target = hlod::kNoNode;
+        for (hlod::NodeId id : g.nodesOf(hlod::NodeKind::Export))
+            if (model_->shownBake() != hlod::kNoNode && g.upstreamOf(id) == model_->shownBake() &&
+                target == hlod::kNoNode)
+                target = id;
+        exportAction_->setText(target != hlod::kNoNode
+                                   ? tr("&Export Package (%1)…")
+                                         .arg(QString::fromStdString(describeNode(g.node(target))))
+                                   : tr("&Export Package…"));
+        exportAction_->setStatusTip(
+            target != hlod::kNoNode
+                ? tr("Write the shown branch's package with %1 as 3D Tiles")
+                      .arg(QString::fromStdString(describeNode(g.node(target))))
+                : tr("Add an Export node to the shown branch and write its package as 3D Tiles"));
         exportAllAction_->setEnabled(
             idle && !session_->document().graph().nodesOf(hlod::NodeKind::Export).empty());
     };
@@ -132,8 +157,9 @@ void MainWindow::adoptPendingProject(const QStringList& files) {
         rebuildRecentMenu();
     }
     Q_UNUSED(files);
-    // Show what the project describes: build its HLOD, then its saved display.
+    // Show what the project describes: build its HLOD, then its saved display and camera.
     const StartupView saved = viewFromProject();
+    pendingCamera_ = cameraFromProject();
     if (!startupPending_) startup_ = {};
     startup_.build = true;
     if (!startup_.mode) startup_.mode = saved.mode;
@@ -142,6 +168,42 @@ void MainWindow::adoptPendingProject(const QStringList& files) {
     startupPending_ = true;
     statusBar()->showMessage(tr("Opened %1: building its HLOD…").arg(session_->displayName()),
                              8000);
+}
+
+std::optional<MainWindow::SavedCamera> MainWindow::cameraFromProject() const {
+    const nlohmann::json& state = session_->document().viewState();
+    const auto camera = state.find("camera");
+    if (camera == state.end() || !camera->is_object()) return std::nullopt;
+    auto read = [&](const char* key, std::array<double, 3>& out) {
+        const auto v = camera->find(key);
+        if (v == camera->end() || !v->is_array() || v->size() != 3) return false;
+        for (std::size_t i = 0; i < 3; ++i) {
+            if (!(*v)[i].is_number()) return false;
+            out[i] = (*v)[i].get<double>();
+            if (!std::isfinite(out[i])) return false;
+        }
+        return true;
+    };
+    SavedCamera saved;
+    if (!read("position", saved.position) || !read("focal_point", saved.focalPoint) ||
+        !read("view_up", saved.viewUp))
+        return std::nullopt;
+    saved.viewAngle = camera->value("view_angle", 30.0);
+    if (!(saved.viewAngle > 0.0 && saved.viewAngle < 180.0) || saved.position == saved.focalPoint)
+        return std::nullopt;
+    return saved;
+}
+
+void MainWindow::applySavedCamera() {
+    if (!pendingCamera_ || !viewport_) return;
+    vtkCamera* camera = viewport_->camera();
+    camera->SetPosition(pendingCamera_->position.data());
+    camera->SetFocalPoint(pendingCamera_->focalPoint.data());
+    camera->SetViewUp(pendingCamera_->viewUp.data());
+    camera->SetViewAngle(pendingCamera_->viewAngle);
+    viewport_->renderer()->ResetCameraClippingRange();
+    pendingCamera_.reset();
+    viewport_->update();
 }
 
 MainWindow::StartupView MainWindow::viewFromProject() const {
@@ -168,34 +230,52 @@ void MainWindow::storeViewState() {
     nlohmann::json state = session_->document().viewState();
     state["display"] = {{"mode", mode}, {"level", view.level}, {"tint_depth", view.tintByDepth}};
     if (model_->shownBake() != hlod::kNoNode) state["display"]["bake"] = model_->shownBake();
+    // The camera (issue 31 #11): opening the project shows the scene from where it was saved.
+    // A key older projects lack: they open with the fitted default view.
+    if (viewport_ && scene()) {
+        vtkCamera* camera = viewport_->camera();
+        auto vec = [](const double* v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
+        state["camera"] = {{"position", vec(camera->GetPosition())},
+                           {"focal_point", vec(camera->GetFocalPoint())},
+                           {"view_up", vec(camera->GetViewUp())},
+                           {"view_angle", camera->GetViewAngle()}};
+    }
     session_->document().setViewState(std::move(state));
 }
 
 bool MainWindow::saveProject() {
     if (session_->projectPath().isEmpty()) return saveProjectAs();
-    storeViewState();
-    try {
-        session_->save(session_->projectPath());
-    } catch (const std::exception& e) {
-        log_->error(QString::fromStdString(e.what()));
-        QMessageBox::warning(this, tr("Could not save the project"),
-                             QString::fromStdString(e.what()));
-        return false;
+    return saveProjectTo(session_->projectPath());
+}
+
+QString MainWindow::defaultProjectPath() const {
+    if (!session_->projectPath().isEmpty()) return session_->projectPath();
+    // Named after the scene ("spring.hlodproj"; a folder's name for a folder), in the folder
+    // of the last project saved or opened, else Documents: not the scene's folder, which is
+    // often shared or read-only data (issue 31 #11).
+    QString name = QStringLiteral("sample");
+    if (!sceneFiles_.isEmpty()) {
+        const QFileInfo first(sceneFiles_.front());
+        name = first.isDir() ? first.fileName() : first.completeBaseName();
     }
-    log_->info(tr("Saved project %1").arg(session_->projectPath()));
-    updateTitle();
-    return true;
+    if (name.isEmpty()) name = QStringLiteral("project");
+    QString dir = QSettings().value(QStringLiteral("projects/lastFolder")).toString();
+    if (dir.isEmpty() || !QFileInfo(dir).isDir())
+        dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (dir.isEmpty() || !QFileInfo(dir).isDir()) dir = QDir::homePath();
+    return QDir(dir).filePath(name + QLatin1String(hlod::kProjectExtension));
 }
 
 bool MainWindow::saveProjectAs() {
-    QString dir = session_->projectPath();
-    if (dir.isEmpty())
-        dir = sceneFiles_.isEmpty() ? QDir::homePath()
-                                    : QFileInfo(sceneFiles_.front()).absolutePath();
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), dir, projectFilter());
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), defaultProjectPath(),
+                                                projectFilter());
     if (path.isEmpty()) return false;
     if (!path.endsWith(QLatin1String(hlod::kProjectExtension)))
         path += QLatin1String(hlod::kProjectExtension);
+    return saveProjectTo(path);
+}
+
+bool MainWindow::saveProjectTo(const QString& path) {
     storeViewState();
     try {
         session_->save(path);
@@ -206,6 +286,8 @@ bool MainWindow::saveProjectAs() {
         return false;
     }
     log_->info(tr("Saved project %1").arg(path));
+    if (writeSettings_)
+        QSettings().setValue(QStringLiteral("projects/lastFolder"), QFileInfo(path).absolutePath());
     updateTitle();
     return true;
 }
@@ -244,10 +326,31 @@ void MainWindow::exportDialog() {
     hlod::widgets::ExportDialog dialog(*session_->undo(), model_, exportNode, folder, this);
     dialog.setObjectName(QStringLiteral("ExportDialog"));
     connect(&dialog, &hlod::widgets::ExportDialog::exported, this,
-            [this](const QString& dir, qint64 files, qint64) {
-                log_->info(tr("Exported the package to %1 (%2 files)").arg(dir).arg(files));
+            [this, exportNode](const QString& dir, qint64 files, qint64 bytes) {
+                const hlod::PipelineGraph& graph = session_->document().graph();
+                const QString node =
+                    graph.hasNode(exportNode)
+                        ? QString::fromStdString(describeNode(graph.node(exportNode)))
+                        : tr("Export");
+                const QString text =
+                    tr("%1 wrote the package to %2: %3 files, %4")
+                        .arg(node, dir)
+                        .arg(files)
+                        .arg(hlod::widgets::formatMegabytes(static_cast<std::uint64_t>(bytes)));
+                log_->info(text);
+                statusBar()->showMessage(text, 15000);
+                exportedMessage(tr("Package Exported"), text);
             });
     dialog.exec();
+}
+
+void MainWindow::exportedMessage(const QString& title, const QString& text) {
+    if (!screenshotPath_.isEmpty()) return;
+    // Window-modal but not blocking: the run's end is not held up, tests can read and close it.
+    auto* box = new QMessageBox(QMessageBox::Information, title, text, QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("ExportedMessage"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 void MainWindow::exportAll() {
@@ -266,7 +369,10 @@ void MainWindow::exportAll() {
                                     QString::fromStdString(out->exported->output.string()))
                                .arg(out->exported->written.files));
         }
-        statusBar()->showMessage(tr("Exported %1 packages").arg(exports.size()), 8000);
+        statusBar()->showMessage(tr("Exported %1 packages").arg(exports.size()), 15000);
+        exportedMessage(
+            tr("Packages Exported"),
+            tr("Exported %1 packages; the log lists their folders").arg(exports.size()));
         context->deleteLater();
     };
     using hlod::widgets::StudioModel;

@@ -125,7 +125,10 @@ void addBakeAndExport(std::vector<ParamDecl>& v) {
                         {"decimate", "remesh", "sloppy"}));
     v.push_back(
         ranged(decl("screen_size", "Screen size", T::Double, N::Bake, sp.screenSize, "px",
-                    "Projected diameter at which a cluster replaces its children", "--screen-size"),
+                    "Switch size S: a cluster is drawn as its proxy once it looks smaller than S "
+                    "pixels. A smaller S switches proxies in later (the camera farther away), "
+                    "so more original triangles are drawn; a larger S draws fewer",
+                    "--screen-size"),
                1.0, 100000.0, true));
     v.push_back(
         ranged(decl("pixel_error", "Pixel error", T::Double, N::Bake, sp.pixelError, "px",

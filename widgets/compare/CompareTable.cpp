@@ -6,6 +6,7 @@
 
 #include "widgets/DisplayController.h"
 #include "widgets/GraphRunner.h"
+#include "widgets/NumberFormat.h"
 
 namespace hlod::widgets {
 
@@ -26,7 +27,8 @@ CompareTable::CompareTable(QWidget* parent) : QTableWidget(RowCount, 2, parent) 
         tr("Nodes of the cluster tree: leaves (one per mesh instance) and clusters"),
         tr("Triangles of all proxies of the inner nodes together"),
         tr("Bytes on disk of the package hlod build writes for this side (compressed, the "
-           "allocated blocks of all its files): the figure hlod build prints")};
+           "allocated blocks of all its files): the figure hlod build prints; MB = 10⁶ bytes, "
+           "as in Statistics")};
     for (int r = 0; r < RowCount; ++r) {
         auto* header = new QTableWidgetItem(rows[r]);
         header->setToolTip(tips[r] + QLatin1Char('\n') + tr("Lower is better."));
@@ -96,7 +98,7 @@ void CompareTable::refreshRow(Row row) {
         const auto& v = values_[row][side];
         QString text = QStringLiteral("–");
         if (v)
-            text = row == PackageRow ? locale.formattedDataSize(static_cast<qint64>(*v))
+            text = row == PackageRow ? formatMegabytes(*v)
                                      : locale.toString(static_cast<qulonglong>(*v));
         cell->setText(text);
         cell->setToolTip(v && row == PackageRow
