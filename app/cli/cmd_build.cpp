@@ -326,11 +326,8 @@ int runBuild(const CommandArgs& argv) {
         plans.push_back(checkPlanBeforeBake(graph, exportNode, bar.progress()));
     graph.run(exports, bar.progress());
     bar.finish();
-    for (std::size_t i = 0; i < exports.size(); ++i) {
-        const NodeOutput& out = *graph.output(exports[i]);
-        warnDamaged(out);
-        recordFinalCosts(out.bakeParams.cacheDir, plans[i], *out.tree, *out.bake);
-    }
+    for (NodeId exportNode : exports)
+        warnDamaged(*graph.output(exportNode));
     if (args.has("--json")) {
         if (exports.size() == 1) {
             std::cout << resultJson(graph, exports[0], plans[0]).dump(2) << "\n";

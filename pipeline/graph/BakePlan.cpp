@@ -396,13 +396,6 @@ PlanCheck checkBakePlan(const std::filesystem::path& cacheDir, const Scene& scen
     return c;
 }
 
-void recordFinalCosts(const std::filesystem::path& cacheDir, const PlanCheck& check,
-                      const ClusterTree& tree, const BakeResult& bake) {
-    if (!check.matches) return;
-    const std::filesystem::path folder = planFolder(cacheDir);
-    recordCosts(cacheDir, check.id + "-final", readKeys(folder / kKeysFile, tree), bake);
-}
-
 std::string describeMissingShards(const PlanCheck& check) {
     const std::size_t n = check.missing.size();
     std::string list, files;

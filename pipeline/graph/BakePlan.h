@@ -91,11 +91,6 @@ struct PlanCheck {
 PlanCheck checkBakePlan(const std::filesystem::path& cacheDir, const Scene& scene,
                         const ClusterTree& tree, const BakeParams& params);
 
-// After the final build's bake: records what the nodes it baked (above the cut) cost, as the
-// shards do (BakeCosts.h). Nothing when `check` is not a matching plan.
-void recordFinalCosts(const std::filesystem::path& cacheDir, const PlanCheck& check,
-                      const ClusterTree& tree, const BakeResult& bake);
-
 // "shards 1 and 3 of 4 have not finished (no shard-1.done, shard-3.done)".
 std::string describeMissingShards(const PlanCheck& check);
 

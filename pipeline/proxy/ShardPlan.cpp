@@ -3,6 +3,7 @@
 #include "pipeline/proxy/ShardPlan.h"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -15,6 +16,8 @@ namespace {
 
 // How many of the costliest units each greedy step tries to split.
 constexpr std::size_t kSplitCandidates = 8;
+// A key held by more groups than this (a part repeated all over the scene) does not merge them.
+constexpr std::size_t kMaxHolders = 16;
 
 // Estimated input triangles of every inner node (ShardPlan.h "Cost"), children first.
 std::vector<double> estimatedInputs(const Scene& scene, const ClusterTree& tree, double rho) {
@@ -88,21 +91,11 @@ public:
     // each group is charged its share, w / (groups holding it); the loads sum to the total.
     double assign(const std::vector<Unit>& units, std::vector<std::vector<std::size_t>>* members,
                   std::vector<double>* loads) const {
-        std::vector<std::vector<std::size_t>> groups;
-        std::unordered_map<std::uint64_t, std::size_t> groupOfRootKey;
-        for (std::size_t u = 0; u < units.size(); ++u) {
-            const auto [it, fresh] = groupOfRootKey.emplace(key_[units[u].root], groups.size());
-            if (fresh) groups.emplace_back();
-            groups[it->second].push_back(u);
-        }
+        std::vector<std::vector<std::size_t>> groups = overlapGroups(units);
         std::vector<std::vector<std::uint64_t>> groupKeys(groups.size());
         std::unordered_map<std::uint64_t, int> holders;
         for (std::size_t g = 0; g < groups.size(); ++g) {
-            for (std::size_t u : groups[g])
-                groupKeys[g].insert(groupKeys[g].end(), units[u].keys.begin(), units[u].keys.end());
-            std::sort(groupKeys[g].begin(), groupKeys[g].end());
-            groupKeys[g].erase(std::unique(groupKeys[g].begin(), groupKeys[g].end()),
-                               groupKeys[g].end());
+            groupKeys[g] = keysOf(units, groups[g]);
             for (std::uint64_t k : groupKeys[g])
                 ++holders[k];
         }
@@ -130,6 +123,77 @@ public:
     }
 
 private:
+    // The distinct keys of the units `members`, sorted.
+    static std::vector<std::uint64_t> keysOf(const std::vector<Unit>& units,
+                                             const std::vector<std::size_t>& members) {
+        std::vector<std::uint64_t> keys;
+        for (std::size_t u : members)
+            keys.insert(keys.end(), units[u].keys.begin(), units[u].keys.end());
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        return keys;
+    }
+
+    // Units with equal root keys (copies) form one group; groups sharing at least half of the
+    // smaller one's cost are merged (ShardPlan.h "Shared work"): in different shards, the
+    // shard that happens to reach the shared nodes first would bake them all.
+    std::vector<std::vector<std::size_t>> overlapGroups(const std::vector<Unit>& units) const {
+        std::vector<std::vector<std::size_t>> groups;
+        std::unordered_map<std::uint64_t, std::size_t> groupOfRootKey;
+        for (std::size_t u = 0; u < units.size(); ++u) {
+            const auto [it, fresh] = groupOfRootKey.emplace(key_[units[u].root], groups.size());
+            if (fresh) groups.emplace_back();
+            groups[it->second].push_back(u);
+        }
+        std::vector<std::vector<std::uint64_t>> keys(groups.size());
+        std::vector<double> own(groups.size(), 0.0);
+        std::unordered_map<std::uint64_t, std::vector<std::size_t>> holders;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            keys[g] = keysOf(units, groups[g]);
+            for (std::uint64_t k : keys[g]) {
+                own[g] += weight_.at(k);
+                holders[k].push_back(g);
+            }
+        }
+        std::map<std::pair<std::size_t, std::size_t>, double> shared;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            for (std::uint64_t k : keys[g]) {
+                const std::vector<std::size_t>& h = holders.at(k);
+                if (h.size() < 2 || h.size() > kMaxHolders || h.front() != g) continue;
+                for (std::size_t a = 0; a < h.size(); ++a)
+                    for (std::size_t b = a + 1; b < h.size(); ++b)
+                        shared[{h[a], h[b]}] += weight_.at(k);
+            }
+        }
+        std::vector<std::size_t> parent(groups.size());
+        std::iota(parent.begin(), parent.end(), std::size_t(0));
+        const auto find = [&](std::size_t g) {
+            while (parent[g] != g)
+                g = parent[g] = parent[parent[g]];
+            return g;
+        };
+        bool merged = false;
+        for (const auto& [pair, weight] : shared) { // ascending pairs: deterministic
+            if (weight < 0.5 * std::min(own[pair.first], own[pair.second])) continue;
+            const std::size_t a = find(pair.first), b = find(pair.second);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+            merged = true;
+        }
+        if (!merged) return groups;
+        std::vector<std::vector<std::size_t>> out;
+        std::vector<std::size_t> index(groups.size(), groups.size());
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const std::size_t r = find(g);
+            if (index[r] == groups.size()) {
+                index[r] = out.size();
+                out.emplace_back();
+            }
+            auto& into = out[index[r]];
+            into.insert(into.end(), groups[g].begin(), groups[g].end());
+        }
+        return out;
+    }
+
     const ClusterTree& tree_;
     std::vector<std::uint64_t> key_;
     std::unordered_map<std::uint64_t, double> weight_;

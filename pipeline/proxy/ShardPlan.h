@@ -7,9 +7,12 @@
 // rho (BakeParams::proxyRatio, the most a kept proxy holds of its inputs) times the estimated
 // input of each inner child. Translated copies of a cluster bake once (equal structuralKeys):
 // subtrees with equal root keys go to one shard, where the first is baked and the others
-// reused. A key shared deeper down (the same part under different subtrees) is baked once too:
-// the shards that need it share the work through the cache's claims (ProxyCache.h: one bakes,
-// the others wait and reuse), so each is charged its share of that key's cost.
+// reused. Shared work: a key shared deeper down (the same part under different subtrees) is
+// baked once too. Two groups of subtrees sharing at least half of the smaller one's cost are
+// merged and go to one shard (apart, whichever shard reached the shared nodes first would bake
+// them all, and the loads would depend on timing); smaller overlaps are left to the cache's
+// claims (ProxyCache.h: one bakes, the others wait and reuse), each group charged its share of
+// such a key's cost. A key held by more than 16 groups merges nothing.
 // Measured costs (issue 30): a shard records each node it baked, its CPU seconds under the
 // node's structural key (BakeCosts.h); when the cache holds such records from an earlier run,
 // a node found there costs its measured seconds and every other node its estimate times the
