@@ -385,7 +385,7 @@ struct BakeRun {
             if (params.atlas.enabled && !nb.dissolved && nb.hasProxy && !nb.proxy.hasAtlas()) {
                 progress.throwIfCancelled();
                 nb.proxy = bakeNodeAtlas(nb.proxy, scene, tree, id, result.nodes, params, mips);
-                store = true;
+                store = store || nb.proxy.hasAtlas(); // unchanged: the file holds it already
             }
             if (store) cache.store(nb.key, nb.proxy);
             if (!nb.reused) nb.cpuSeconds = threadCpuSeconds() - cpuStart;
