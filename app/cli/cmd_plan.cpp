@@ -47,18 +47,29 @@ void printPlan(const PlanSummary& s, const std::filesystem::path& cache, double 
                 "clustered in %.2f s, written in %.2f s\n",
                 s.folder.string().c_str(), s.id.c_str(), s.shards.shards, s.innerNodes, s.nodes,
                 clusterSeconds, s.seconds);
-    std::printf("cost:         estimated input triangles, each distinct proxy once: %.0f in all\n",
-                s.shards.totalCost);
+    if (s.shards.secondsPerTriangle > 0.0) {
+        std::printf("cost:         CPU seconds, each distinct proxy once: %.1f in all (%zu inner "
+                    "nodes measured by an earlier run, the others estimated at %.3g s per input "
+                    "triangle)\n",
+                    s.shards.totalCost, s.shards.measuredNodes, s.shards.secondsPerTriangle);
+    } else {
+        std::printf("cost:         estimated input triangles, each distinct proxy once: %.0f in "
+                    "all (no measured costs in the cache)\n",
+                    s.shards.totalCost);
+    }
     for (int i = 0; i < s.shards.shards; ++i) {
         const auto k = static_cast<std::size_t>(i);
-        std::printf("shard %-6d  %4zu subtrees, %6zu inner nodes, cost %12.0f (%5.1f%%), slice "
+        std::printf("shard %-6d  %4zu subtrees, %6zu inner nodes, cost %12.6g (%5.1f%%), slice "
                     "%zu meshes, %zu triangles, %.2f MB\n",
                     i, s.shards.roots[k].size(), s.shardInnerNodes[k], s.shards.cost[k],
                     100.0 * s.shards.cost[k] / total, s.shardMeshes[k], s.shardTriangles[k],
                     static_cast<double>(s.shardBytes[k]) / 1e6);
     }
-    std::printf("above cut:    %zu nodes baked by the final step, cost %.0f (%.1f%%)\n",
+    std::printf("above cut:    %zu nodes baked by the final step, cost %.6g (%.1f%%)\n",
                 s.shards.top.size(), s.shards.topCost, 100.0 * s.shards.topCost / total);
+    std::printf("balance:      largest shard %.2fx the mean; predicted speed-up of the bake on %d "
+                "machines %.2fx (Amdahl: all / (above cut + largest shard))\n",
+                s.shards.largestOverMean(), s.shards.shards, s.shards.predictedSpeedup());
     std::printf("next:         hlod build --shard I/%d --cache %s   (I = 0..%d, or auto/%d in a "
                 "job array)\n"
                 "              hlod build SCENE... -o PKG --cache %s   (same flags as this plan)\n",
@@ -83,7 +94,14 @@ nlohmann::json planJson(const PlanSummary& s) {
             {"shards", s.shards.shards},
             {"nodes", s.nodes},
             {"inner_nodes", s.innerNodes},
-            {"cost", {{"total", s.shards.totalCost}, {"above_cut", s.shards.topCost}}},
+            {"cost",
+             {{"total", s.shards.totalCost},
+              {"above_cut", s.shards.topCost},
+              {"unit", s.shards.secondsPerTriangle > 0.0 ? "cpu_seconds" : "triangles"},
+              {"measured_nodes", s.shards.measuredNodes}}},
+            {"balance",
+             {{"largest_over_mean", s.shards.largestOverMean()},
+              {"predicted_speedup", s.shards.predictedSpeedup()}}},
             {"above_cut_nodes", s.shards.top.size()},
             {"shard_list", shards},
             {"seconds", s.seconds}};

@@ -15,6 +15,7 @@
 #include "pipeline/cluster/ClusterTreeBinary.h"
 #include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/proxy/BakeCosts.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/scene/SceneBinary.h"
 
@@ -22,9 +23,10 @@ namespace hlod {
 
 namespace {
 
-constexpr int kFormat = 1;
+constexpr int kFormat = 2; // 2: keys.bin, measured costs (issue 30)
 constexpr const char* kPlanFile = "plan.json";
 constexpr const char* kTreeFile = "tree.bin";
+constexpr const char* kKeysFile = "keys.bin";
 
 std::string sliceName(int index) { return "shard-" + std::to_string(index) + ".scene"; }
 std::string markerName(int index) { return "shard-" + std::to_string(index) + ".done"; }
@@ -180,6 +182,28 @@ nlohmann::json writeSlice(const std::filesystem::path& folder, const Scene& scen
             {"triangles", triangles}};
 }
 
+// The plan's structural keys (keys.bin), one per tree node.
+std::vector<std::uint64_t> readKeys(const std::filesystem::path& file, const ClusterTree& tree) {
+    const std::string bytes = readChecked(file);
+    if (bytes.size() != tree.nodes.size() * sizeof(std::uint64_t) && !bytes.empty())
+        throw Error(ErrorCode::Malformed, file, "does not match the plan's tree");
+    std::vector<std::uint64_t> keys(bytes.size() / sizeof(std::uint64_t));
+    std::memcpy(keys.data(), bytes.data(), bytes.size());
+    return keys;
+}
+
+// What each node this shard baked cost, under its structural key, for the next plan
+// (BakeCosts.h); nodes taken from the cache cost nothing here and are not recorded.
+void recordCosts(const std::filesystem::path& cacheDir, const std::string& name,
+                 const std::vector<std::uint64_t>& keys, const BakeResult& bake) {
+    std::vector<std::pair<std::uint64_t, double>> costs;
+    for (std::size_t id = 0; id < keys.size() && id < bake.nodes.size(); ++id) {
+        if (bake.nodes[id].cpuSeconds > 0.0)
+            costs.emplace_back(keys[id], bake.nodes[id].cpuSeconds);
+    }
+    writeBakeCosts(cacheDir, name, costs);
+}
+
 // The fresh plan folder takes the place of the old one (which goes, with its shard-I.done).
 void swapIn(const std::filesystem::path& fresh, const std::filesystem::path& folder,
             const std::filesystem::path& old) {
@@ -216,7 +240,10 @@ PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& sc
     PlanSummary s;
     s.folder = planFolder(cacheDir);
     progress.emit(ProgressInfo{"plan", 0, static_cast<std::uint64_t>(shards) + 1, "cutting"});
-    s.shards = planShards(scene, tree, params, shards);
+    const std::vector<std::uint64_t> keys = tree.root == kNoId || tree.nodes[tree.root].isLeaf()
+                                                ? std::vector<std::uint64_t>()
+                                                : structuralKeys(scene, tree, params);
+    s.shards = planShards(scene, tree, params, shards, keys, readBakeCosts(cacheDir));
     const std::string treeBytes = writeClusterTreeBinary(tree);
     s.id = toHex(planIdFrom(scene, treeBytes, params));
     s.nodes = tree.nodes.size();
@@ -237,6 +264,8 @@ PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& sc
     if (ec) throw Error(ErrorCode::Io, fresh, "cannot create folder: " + ec.message());
     try {
         writeChecked(fresh / kTreeFile, treeBytes);
+        writeChecked(fresh / kKeysFile, std::string(reinterpret_cast<const char*>(keys.data()),
+                                                    keys.size() * sizeof(std::uint64_t)));
         nlohmann::json list = nlohmann::json::array();
         for (int i = 0; i < shards; ++i) {
             progress.throwIfCancelled();
@@ -316,6 +345,8 @@ ShardResult runBakeShard(const std::filesystem::path& cacheDir, int index, int s
     }
 
     const BakeResult bake = bakeSubtrees(slice, tree, roots, params, progress);
+    recordCosts(cacheDir, plan.at("id").get<std::string>() + "-" + std::to_string(index),
+                readKeys(folder / kKeysFile, tree), bake);
     ShardResult r;
     r.index = index;
     r.shards = shards;

@@ -3,24 +3,28 @@
 // the final `hlod build` checks before it bakes the nodes above the cut and writes the package.
 //
 // Folder CACHE/plan/ (the proxies stay in CACHE/, content-addressed, ProxyCache.h):
-//   plan.json      {"format": 1, "id": hex, "shards": N, "bake": Bake parameters (JSON of
+//   plan.json      {"format": 2, "id": hex, "shards": N, "bake": Bake parameters (JSON of
 //                  Parameters.h), "nodes", "inner_nodes", "cost": {"total", "above_cut"},
 //                  "above_cut": [node ids], "shard_list": [{"index", "file", "roots": [node
 //                  ids], "cost", "meshes", "triangles"}]}
 //   tree.bin       the cluster tree, exact (ClusterTreeBinary.h)
+//   keys.bin       per tree node its structural key (structuralKeys, 64-bit little-endian):
+//                  under these a shard records what its nodes cost (BakeCosts.h), and the next
+//                  plan in this cache folder balances its shards by those measured costs
 //   shard-I.scene  shard I's slice of the scene: only the meshes and textures its subtrees
 //                  read (sliceScene, SceneBinary.h), so a shard's memory is about its share
 //   shard-I.done   written by shard I once all its proxies are in the cache: {"plan", "shard",
 //                  "shards", "inner_nodes", "baked", "reused", "seconds"}
-// tree.bin and the slices end in a 64-bit checksum of the bytes before it. The plan is written
-// into a temporary folder that then replaces CACHE/plan, so readers see a whole plan or the
-// previous one; a new plan has no shard-I.done files. The id is a hash of the scene's content,
-// the tree and the bake parameters (bakeParamsKey): the final build finds the plan it belongs
-// to by recomputing it. Paths inside are relative to the plan folder, so the cache folder may
-// be mounted at another path on every machine.
-// Failure: Error naming the file: FileNotFound for a missing plan or slice ("run hlod plan"),
-// Malformed for a damaged or foreign file (bad checksum, bad JSON, wrong format), Io when the
-// folder cannot be written, InvalidArgument for a shard index outside the plan.
+// Format 2 (issue 30) added keys.bin; a plan of another format is refused with "run hlod plan
+// again". tree.bin, keys.bin and the slices end in a 64-bit checksum of the bytes before it. The
+// plan is written into a temporary folder that then replaces CACHE/plan, so readers see a whole
+// plan or the previous one; a new plan has no shard-I.done files. The id is a hash of the scene's
+// content, the tree and the bake parameters (bakeParamsKey): the final build finds the plan it
+// belongs to by recomputing it. Paths inside are relative to the plan folder, so the cache folder
+// may be mounted at another path on every machine. Failure: Error naming the file: FileNotFound for
+// a missing plan or slice ("run hlod plan"), Malformed for a damaged or foreign file (bad checksum,
+// bad JSON, wrong format), Io when the folder cannot be written, InvalidArgument for a shard index
+// outside the plan.
 #pragma once
 
 #include <cstdint>

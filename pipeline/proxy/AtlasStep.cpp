@@ -1,6 +1,8 @@
 // See AtlasStep.h.
 #include "pipeline/proxy/AtlasStep.h"
 
+#include <algorithm>
+
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/atlas/BakeAtlas.h"
 
@@ -47,6 +49,12 @@ ProxyMesh bakeNodeAtlas(const ProxyMesh& proxy, const Scene& scene, const Cluste
                         Id node, const std::vector<NodeBake>& nodes, const BakeParams& params,
                         TextureMips& mips) {
     if (!params.atlas.enabled || proxy.empty()) return proxy;
+    // A scene without any texture image: bakeAtlas would return the proxy unchanged
+    // (skipUntextured), so the subtree's surfaces are not gathered (at the root: the scene).
+    const bool anyImage =
+        std::any_of(scene.textures.begin(), scene.textures.end(),
+                    [](const Texture& t) { return t.image && !t.image->empty(); });
+    if (params.atlas.skipUntextured && !anyImage) return proxy;
     const SourceSurfaces sources = gatherNodeSources(scene, tree, node, nodes);
     const double texelSize = nodes[node].errorBudget / params.screen.pixelError;
     ProxyMesh out =

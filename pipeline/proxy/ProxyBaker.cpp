@@ -34,6 +34,13 @@ namespace {
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
 constexpr std::uint64_t kBakeFormatVersion = 11;
 
+// CPU time of the calling thread (a node's measured cost, NodeBake::cpuSeconds).
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
 std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {
     std::vector<Id> order;
@@ -346,6 +353,7 @@ struct BakeRun {
 
     void bakeNode(Id id) {
         progress.throwIfCancelled();
+        const double cpuStart = threadCpuSeconds();
         NodeBake& nb = result.nodes[id];
         std::vector<Id> inputs = inputsOf(id);
         const std::vector<AggregatePart> parts = partsOf(id, inputs);
@@ -377,9 +385,10 @@ struct BakeRun {
             if (params.atlas.enabled && !nb.dissolved && nb.hasProxy && !nb.proxy.hasAtlas()) {
                 progress.throwIfCancelled();
                 nb.proxy = bakeNodeAtlas(nb.proxy, scene, tree, id, result.nodes, params, mips);
-                store = true;
+                store = store || nb.proxy.hasAtlas(); // unchanged: the file holds it already
             }
             if (store) cache.store(nb.key, nb.proxy);
+            if (!nb.reused) nb.cpuSeconds = threadCpuSeconds() - cpuStart;
             applyProxyLook(nb.proxy, looks[id]); // not cached: derived from the originals
             if (owner) owner->set_value(nb.proxy);
         } catch (...) {

@@ -84,6 +84,8 @@ struct NodeBake {
     bool dissolved = false;         // inner nodes: the proxy did not pay (see above)
     bool hasProxy = true;           // inner nodes: false for a root whose proxy did not pay
     std::size_t inputTriangles = 0; // inner nodes: the representations it was baked from
+    double cpuSeconds = 0.0;        // inner nodes baked here: the baking thread's CPU time
+                                    // (the shard plan's measured cost, BakeCosts.h)
     ProxyMesh proxy;                // inner nodes with a proxy only
 };
 

@@ -1,7 +1,9 @@
-// Greedy cost-balanced cut of a cluster tree into shards (LPT over subtrees), see ShardPlan.h.
+// Cost-balanced cut of a cluster tree into shards (best-first splits, LPT), see ShardPlan.h.
+// ShardPlan.h.
 #include "pipeline/proxy/ShardPlan.h"
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -14,6 +16,8 @@ namespace {
 
 // How many of the costliest units each greedy step tries to split.
 constexpr std::size_t kSplitCandidates = 8;
+// A key held by more groups than this (a part repeated all over the scene) does not merge them.
+constexpr std::size_t kMaxHolders = 16;
 
 // Estimated input triangles of every inner node (ShardPlan.h "Cost"), children first.
 std::vector<double> estimatedInputs(const Scene& scene, const ClusterTree& tree, double rho) {
@@ -87,21 +91,11 @@ public:
     // each group is charged its share, w / (groups holding it); the loads sum to the total.
     double assign(const std::vector<Unit>& units, std::vector<std::vector<std::size_t>>* members,
                   std::vector<double>* loads) const {
-        std::vector<std::vector<std::size_t>> groups;
-        std::unordered_map<std::uint64_t, std::size_t> groupOfRootKey;
-        for (std::size_t u = 0; u < units.size(); ++u) {
-            const auto [it, fresh] = groupOfRootKey.emplace(key_[units[u].root], groups.size());
-            if (fresh) groups.emplace_back();
-            groups[it->second].push_back(u);
-        }
+        std::vector<std::vector<std::size_t>> groups = overlapGroups(units);
         std::vector<std::vector<std::uint64_t>> groupKeys(groups.size());
         std::unordered_map<std::uint64_t, int> holders;
         for (std::size_t g = 0; g < groups.size(); ++g) {
-            for (std::size_t u : groups[g])
-                groupKeys[g].insert(groupKeys[g].end(), units[u].keys.begin(), units[u].keys.end());
-            std::sort(groupKeys[g].begin(), groupKeys[g].end());
-            groupKeys[g].erase(std::unique(groupKeys[g].begin(), groupKeys[g].end()),
-                               groupKeys[g].end());
+            groupKeys[g] = keysOf(units, groups[g]);
             for (std::uint64_t k : groupKeys[g])
                 ++holders[k];
         }
@@ -129,6 +123,77 @@ public:
     }
 
 private:
+    // The distinct keys of the units `members`, sorted.
+    static std::vector<std::uint64_t> keysOf(const std::vector<Unit>& units,
+                                             const std::vector<std::size_t>& members) {
+        std::vector<std::uint64_t> keys;
+        for (std::size_t u : members)
+            keys.insert(keys.end(), units[u].keys.begin(), units[u].keys.end());
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+        return keys;
+    }
+
+    // Units with equal root keys (copies) form one group; groups sharing at least half of the
+    // smaller one's cost are merged (ShardPlan.h "Shared work"): in different shards, the
+    // shard that happens to reach the shared nodes first would bake them all.
+    std::vector<std::vector<std::size_t>> overlapGroups(const std::vector<Unit>& units) const {
+        std::vector<std::vector<std::size_t>> groups;
+        std::unordered_map<std::uint64_t, std::size_t> groupOfRootKey;
+        for (std::size_t u = 0; u < units.size(); ++u) {
+            const auto [it, fresh] = groupOfRootKey.emplace(key_[units[u].root], groups.size());
+            if (fresh) groups.emplace_back();
+            groups[it->second].push_back(u);
+        }
+        std::vector<std::vector<std::uint64_t>> keys(groups.size());
+        std::vector<double> own(groups.size(), 0.0);
+        std::unordered_map<std::uint64_t, std::vector<std::size_t>> holders;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            keys[g] = keysOf(units, groups[g]);
+            for (std::uint64_t k : keys[g]) {
+                own[g] += weight_.at(k);
+                holders[k].push_back(g);
+            }
+        }
+        std::map<std::pair<std::size_t, std::size_t>, double> shared;
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            for (std::uint64_t k : keys[g]) {
+                const std::vector<std::size_t>& h = holders.at(k);
+                if (h.size() < 2 || h.size() > kMaxHolders || h.front() != g) continue;
+                for (std::size_t a = 0; a < h.size(); ++a)
+                    for (std::size_t b = a + 1; b < h.size(); ++b)
+                        shared[{h[a], h[b]}] += weight_.at(k);
+            }
+        }
+        std::vector<std::size_t> parent(groups.size());
+        std::iota(parent.begin(), parent.end(), std::size_t(0));
+        const auto find = [&](std::size_t g) {
+            while (parent[g] != g)
+                g = parent[g] = parent[parent[g]];
+            return g;
+        };
+        bool merged = false;
+        for (const auto& [pair, weight] : shared) { // ascending pairs: deterministic
+            if (weight < 0.5 * std::min(own[pair.first], own[pair.second])) continue;
+            const std::size_t a = find(pair.first), b = find(pair.second);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+            merged = true;
+        }
+        if (!merged) return groups;
+        std::vector<std::vector<std::size_t>> out;
+        std::vector<std::size_t> index(groups.size(), groups.size());
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const std::size_t r = find(g);
+            if (index[r] == groups.size()) {
+                index[r] = out.size();
+                out.emplace_back();
+            }
+            auto& into = out[index[r]];
+            into.insert(into.end(), groups[g].begin(), groups[g].end());
+        }
+        return out;
+    }
+
     const ClusterTree& tree_;
     std::vector<std::uint64_t> key_;
     std::unordered_map<std::uint64_t, double> weight_;
@@ -146,10 +211,126 @@ double topCost(const Planner& planner, const std::vector<std::uint64_t>& keys,
     return cost;
 }
 
+// Per inner node its cost (ShardPlan.h "Measured costs"); sets plan.measuredNodes and
+// plan.secondsPerTriangle.
+std::vector<double> nodeCosts(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                              const std::vector<std::uint64_t>& keys, const MeasuredCosts& measured,
+                              ShardPlan& plan) {
+    std::vector<double> cost = estimatedInputs(scene, tree, params.proxyRatio);
+    if (measured.empty()) return cost;
+    double seconds = 0.0, estimate = 0.0;
+    std::vector<char> found(tree.nodes.size(), 0);
+    for (Id id = 0; id < tree.nodes.size(); ++id) {
+        if (tree.nodes[id].isLeaf()) continue;
+        const auto it = measured.find(keys[id]);
+        if (it == measured.end()) continue;
+        found[id] = 1;
+        ++plan.measuredNodes;
+        seconds += it->second;
+        estimate += cost[id];
+    }
+    if (plan.measuredNodes == 0 || estimate <= 0.0 || seconds <= 0.0) {
+        plan.measuredNodes = 0;
+        return cost;
+    }
+    plan.secondsPerTriangle = seconds / estimate;
+    for (Id id = 0; id < tree.nodes.size(); ++id)
+        cost[id] = found[id] ? measured.at(keys[id]) : cost[id] * plan.secondsPerTriangle;
+    return cost;
+}
+
+// Whether splitting the unit at `root` makes new units (it has inner children).
+bool splittable(const ClusterTree& tree, Id root) {
+    for (Id c : tree.nodes[root].children) {
+        if (!tree.nodes[c].isLeaf()) return true;
+    }
+    return false;
+}
+
+// The units and the nodes above the cut of one cut.
+struct Cut {
+    std::vector<Unit> units;
+    std::vector<Id> top;
+    double makespan = 0.0;
+};
+
+// The best-first search of ShardPlan.h "Cut".
+Cut searchCut(const ClusterTree& tree, const Planner& planner,
+              const std::vector<std::uint64_t>& keys, double total, int shards) {
+    Cut cut;
+    cut.units.push_back(planner.makeUnit(tree.root));
+    cut.makespan = planner.assign(cut.units, nullptr, nullptr);
+    Cut best = cut;
+    const double n = static_cast<double>(shards);
+    // Enough for any tree we bake; the bound below ends the search long before.
+    const std::size_t maxSteps = 16 * tree.nodes.size() + 64;
+    for (std::size_t step = 0; step < maxSteps; ++step) {
+        std::vector<std::size_t> byCost;
+        for (std::size_t u = 0; u < cut.units.size(); ++u) {
+            if (splittable(tree, cut.units[u].root)) byCost.push_back(u);
+        }
+        std::stable_sort(byCost.begin(), byCost.end(), [&](std::size_t a, std::size_t b) {
+            return cut.units[a].cost > cut.units[b].cost;
+        });
+        byCost.resize(std::min(byCost.size(), kSplitCandidates));
+        if (byCost.empty()) break;
+        Cut next;
+        next.makespan = -1.0;
+        for (std::size_t u : byCost) {
+            Cut candidate;
+            candidate.units.reserve(cut.units.size() +
+                                    tree.nodes[cut.units[u].root].children.size());
+            for (std::size_t other = 0; other < cut.units.size(); ++other) {
+                if (other != u) candidate.units.push_back(cut.units[other]);
+            }
+            for (Id c : tree.nodes[cut.units[u].root].children) {
+                if (!tree.nodes[c].isLeaf()) candidate.units.push_back(planner.makeUnit(c));
+            }
+            candidate.top = cut.top;
+            candidate.top.push_back(cut.units[u].root);
+            candidate.makespan = topCost(planner, keys, candidate.top) +
+                                 planner.assign(candidate.units, nullptr, nullptr);
+            if (next.makespan < 0.0 || candidate.makespan < next.makespan)
+                next = std::move(candidate);
+        }
+        cut = std::move(next);
+        if (cut.makespan < best.makespan) best = cut;
+        const double above = topCost(planner, keys, cut.top);
+        if (total / n + above * (1.0 - 1.0 / n) >= best.makespan) break;
+    }
+    return best;
+}
+
 } // namespace
 
+double ShardPlan::largestOverMean() const {
+    double sum = 0.0, largest = 0.0;
+    for (double c : cost) {
+        sum += c;
+        largest = std::max(largest, c);
+    }
+    return sum > 0.0 ? largest * static_cast<double>(cost.size()) / sum : 1.0;
+}
+
+double ShardPlan::predictedSpeedup() const {
+    double largest = 0.0;
+    for (double c : cost)
+        largest = std::max(largest, c);
+    return topCost + largest > 0.0 ? totalCost / (topCost + largest) : 1.0;
+}
+
 ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
-                     int shards) {
+                     int shards, const MeasuredCosts& measured) {
+    const bool empty = tree.root == kNoId || tree.nodes[tree.root].isLeaf();
+    return planShards(scene, tree, params, shards,
+                      empty || shards < 1 ? std::vector<std::uint64_t>()
+                                          : structuralKeys(scene, tree, params),
+                      measured);
+}
+
+ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakeParams& params,
+                     int shards, const std::vector<std::uint64_t>& keys,
+                     const MeasuredCosts& measured) {
     if (shards < 1 || shards > 100000) {
         throw Error(ErrorCode::InvalidArgument,
                     "shards must be within [1, 100000], got " + std::to_string(shards));
@@ -159,59 +340,22 @@ ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakePara
     plan.roots.resize(static_cast<std::size_t>(shards));
     plan.cost.assign(static_cast<std::size_t>(shards), 0.0);
     if (tree.root == kNoId || tree.nodes[tree.root].isLeaf()) return plan;
+    if (keys.size() != tree.nodes.size())
+        throw Error(ErrorCode::InvalidArgument, "shard plan: the keys do not match the tree");
 
-    const std::vector<std::uint64_t> keys = structuralKeys(scene, tree, params);
-    const Planner planner(tree, keys, estimatedInputs(scene, tree, params.proxyRatio), shards);
-    std::vector<Unit> units{planner.makeUnit(tree.root)};
-    plan.totalCost = units[0].cost;
-    std::vector<Id> top;
-    double makespan = planner.assign(units, nullptr, nullptr);
-    // Greedy splits while the estimated makespan drops (ShardPlan.h): of the costliest units,
-    // the one whose split lowers it most.
-    for (;;) {
-        std::vector<std::size_t> byCost(units.size());
-        std::iota(byCost.begin(), byCost.end(), std::size_t(0));
-        std::stable_sort(byCost.begin(), byCost.end(), [&](std::size_t a, std::size_t b) {
-            return units[a].cost > units[b].cost;
-        });
-        byCost.resize(std::min(byCost.size(), kSplitCandidates));
-        std::vector<Unit> best;
-        std::vector<Id> bestTop;
-        double bestMakespan = makespan;
-        for (std::size_t u : byCost) {
-            std::vector<Unit> next;
-            next.reserve(units.size() + tree.nodes[units[u].root].children.size());
-            for (std::size_t other = 0; other < units.size(); ++other) {
-                if (other != u) next.push_back(units[other]);
-            }
-            for (Id c : tree.nodes[units[u].root].children) {
-                if (!tree.nodes[c].isLeaf()) next.push_back(planner.makeUnit(c));
-            }
-            std::vector<Id> nextTop = top;
-            nextTop.push_back(units[u].root);
-            const double candidate =
-                topCost(planner, keys, nextTop) + planner.assign(next, nullptr, nullptr);
-            if (candidate < bestMakespan) {
-                bestMakespan = candidate;
-                best = std::move(next);
-                bestTop = std::move(nextTop);
-            }
-        }
-        if (bestTop.empty()) break;
-        makespan = bestMakespan;
-        units = std::move(best);
-        top = std::move(bestTop);
-    }
+    const Planner planner(tree, keys, nodeCosts(scene, tree, params, keys, measured, plan), shards);
+    plan.totalCost = planner.makeUnit(tree.root).cost;
+    Cut cut = searchCut(tree, planner, keys, plan.totalCost, shards);
     std::vector<std::vector<std::size_t>> members;
-    planner.assign(units, &members, &plan.cost);
+    planner.assign(cut.units, &members, &plan.cost);
     for (std::size_t s = 0; s < members.size(); ++s) {
         for (std::size_t u : members[s])
-            plan.roots[s].push_back(units[u].root);
+            plan.roots[s].push_back(cut.units[u].root);
         std::sort(plan.roots[s].begin(), plan.roots[s].end());
     }
-    std::sort(top.begin(), top.end());
-    plan.topCost = topCost(planner, keys, top);
-    plan.top = std::move(top);
+    std::sort(cut.top.begin(), cut.top.end());
+    plan.topCost = topCost(planner, keys, cut.top);
+    plan.top = std::move(cut.top);
     return plan;
 }
 

@@ -7,10 +7,13 @@
 #include <fstream>
 #include <map>
 
+#include <nlohmann/json.hpp>
+
 #include "TestUtil.h"
 #include "pipeline/cluster/Cluster.h"
 #include "pipeline/graph/BakePlan.h"
 #include "pipeline/io/SampleScene.h"
+#include "pipeline/proxy/BakeCosts.h"
 #include "pipeline/proxy/ProxyCache.h"
 
 using namespace hlod;
@@ -120,6 +123,42 @@ TEST(BakePlan, DamagedOrMissingPlanFilesAreRefusedNamingTheFile) {
     test::writeFile(cache / "plan/plan.json", "{\"format\": 1, \"shards\": ");
     EXPECT_EQ(test::problemOf([&] { runBakeShard(cache.path(), 0, 2, 1); }),
               (cache / "plan/plan.json").string() + ": is not valid JSON (damaged?)");
+}
+
+TEST(BakePlan, APlanOfTheOldFormatIsRefusedWithRunPlanAgain) {
+    Sample s;
+    test::TempDir cache;
+    writeBakePlan(cache.path(), s.scene, s.tree, s.bake, 2);
+    std::ifstream in(cache / "plan/plan.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    in.close();
+    j["format"] = 1; // written by an hlod before measured costs (no keys.bin)
+    test::writeFile(cache / "plan/plan.json", j.dump());
+    EXPECT_EQ(test::problemOf([&] { runBakeShard(cache.path(), 0, 2, 1); }),
+              (cache / "plan/plan.json").string() +
+                  ": has plan format 1, this hlod reads 2 (run hlod plan again)");
+}
+
+TEST(BakePlan, ShardsRecordWhatTheyBakedAndTheNextPlanIsCostedInSeconds) {
+    Sample s;
+    test::TempDir cache;
+    const PlanSummary first = writeBakePlan(cache.path(), s.scene, s.tree, s.bake, 2);
+    EXPECT_EQ(first.shards.measuredNodes, 0u); // nothing measured yet: estimated triangles
+    EXPECT_EQ(first.shards.secondsPerTriangle, 0.0);
+    const ShardResult r0 = runBakeShard(cache.path(), 0, 2, 1);
+    const ShardResult r1 = runBakeShard(cache.path(), 1, 2, 1);
+    // One record per node a shard baked (the reused ones cost nothing there).
+    const MeasuredCosts costs = readBakeCosts(cache.path());
+    EXPECT_GT(costs.size(), 0u);
+    EXPECT_LE(costs.size(), r0.baked + r1.baked);
+    EXPECT_TRUE(std::filesystem::exists(cache / ("costs/" + first.id + "-0.costs")));
+
+    const PlanSummary next = writeBakePlan(cache.path(), s.scene, s.tree, s.bake, 2);
+    EXPECT_GE(next.shards.measuredNodes, costs.size()); // copies share a key
+    EXPECT_GT(next.shards.secondsPerTriangle, 0.0);
+    // Costs are now CPU seconds: the whole tree costs about what the shards measured plus
+    // the estimate of the few nodes above the cut, far below its triangle count.
+    EXPECT_LT(next.shards.totalCost, first.shards.totalCost / 100.0);
 }
 
 TEST(BakePlan, ShardIndexComesFromSlurmKubernetesOrAwsBatch) {

@@ -105,6 +105,73 @@ TEST(ShardPlan, BalancesEstimatedCostNotTheNumberOfSubtrees) {
     expectCover(tree, plan);
 }
 
+TEST(ShardPlan, SplitsOnPastACutThatIsNoBetterToBalanceTwoHeavySubtrees) {
+    // Root R over X and Y, each over four groups of two 100-triangle leaves (input 200 each),
+    // rho 0.1: X and Y are estimated 0.1 x 800 = 80 each, R 0.1 x 160 = 16. On 3 shards:
+    // cutting below R gives units X and Y of 880: makespan 16 + 880 = 896. Splitting X alone
+    // is worse (top 96, Y still 880: 976), so a search that stops there keeps 896; splitting
+    // Y too gives eight units of 200 on 3 shards (600, 600, 400) under a top of 176: 776.
+    Scene scene;
+    test::TreeBuilder b(scene);
+    const Id mesh = scene.addMesh(triangles(100));
+    std::vector<Id> halves;
+    for (int h = 0; h < 2; ++h) {
+        std::vector<Id> groups;
+        for (int g = 0; g < 4; ++g) {
+            // The second leaf's offset differs per group: no two groups are copies.
+            const glm::dvec3 at(20.0 * g, 20.0 * h, 0);
+            groups.push_back(b.inner(
+                {b.leaf(place(scene, mesh, at)),
+                 b.leaf(place(scene, mesh, at + glm::dvec3(0, 1.0 + 0.5 * (4 * h + g), 0)))}));
+        }
+        halves.push_back(b.inner(groups));
+    }
+    const ClusterTree tree = b.finish(b.inner(halves));
+    BakeParams params = fastParams();
+    params.proxyRatio = 0.1;
+    const ShardPlan plan = planShards(scene, tree, params, 3);
+    std::vector<double> cost = plan.cost;
+    std::sort(cost.begin(), cost.end());
+    EXPECT_EQ(cost, (std::vector<double>{400.0, 600.0, 600.0}));
+    EXPECT_EQ(plan.top, (std::vector<Id>{halves[0], halves[1], tree.root}));
+    EXPECT_DOUBLE_EQ(plan.topCost, 176.0);
+    EXPECT_DOUBLE_EQ(plan.largestOverMean(), 600.0 / (1600.0 / 3.0));
+    EXPECT_DOUBLE_EQ(plan.predictedSpeedup(), 1776.0 / 776.0);
+    expectCover(tree, plan);
+}
+
+TEST(ShardPlan, MeasuredCostsReplaceTheEstimates) {
+    // The four groups of BalancesEstimatedCostNotTheNumberOfSubtrees (estimated 400, 300,
+    // 200, 100), measured at 1, 1, 1 and 3 CPU seconds: 6 s for 1000 estimated triangles, so
+    // the unmeasured root costs 350 x 0.006 = 2.1 s. Balanced by seconds, the smallest group
+    // by triangles is a shard alone: {D} 3 s, {A, B, C} 3 s.
+    Scene scene;
+    test::TreeBuilder b(scene);
+    std::vector<Id> groups;
+    double x = 0.0;
+    for (int tris : {200, 150, 100, 50}) {
+        const Id mesh = scene.addMesh(triangles(tris));
+        groups.push_back(b.inner(
+            {b.leaf(place(scene, mesh, {x, 0, 0})), b.leaf(place(scene, mesh, {x, 1, 0}))}));
+        x += 10.0;
+    }
+    const ClusterTree tree = b.finish(b.inner(groups));
+    const std::vector<std::uint64_t> keys = structuralKeys(scene, tree, fastParams());
+    const MeasuredCosts measured{{keys[groups[0]], 1.0},
+                                 {keys[groups[1]], 1.0},
+                                 {keys[groups[2]], 1.0},
+                                 {keys[groups[3]], 3.0}};
+    const ShardPlan plan = planShards(scene, tree, fastParams(), 2, measured);
+    EXPECT_EQ(plan.measuredNodes, 4u);
+    EXPECT_DOUBLE_EQ(plan.secondsPerTriangle, 0.006);
+    EXPECT_EQ(plan.roots[0], (std::vector<Id>{groups[3]}));
+    EXPECT_EQ(plan.roots[1], (std::vector<Id>{groups[0], groups[1], groups[2]}));
+    EXPECT_DOUBLE_EQ(plan.cost[0], 3.0);
+    EXPECT_DOUBLE_EQ(plan.cost[1], 3.0);
+    EXPECT_DOUBLE_EQ(plan.topCost, 2.1);
+    expectCover(tree, plan);
+}
+
 TEST(ShardPlan, TranslatedCopiesStayInOneShard) {
     // Four translated copies G1..G4 of a pair of boxes and one different pair H under the
     // root. The copies bake once, so they are one unit of 2 x 12 = 24 triangles, as costly as
