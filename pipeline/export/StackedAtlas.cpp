@@ -38,6 +38,10 @@ Shifts shiftsOf(const Mesh& mesh, std::size_t t) {
     return {std::ceil(maxV - 1.0 - kPeriodSlack), std::floor(minV + kPeriodSlack)};
 }
 
+// Rows above and below a band of `rows`: kAtlasPadRows, more for short textures so that every
+// band with its padding spans kAtlasMinSlotRows (StackedAtlas.h "Filtering").
+int padOf(int rows) { return std::max(kAtlasPadRows, (kAtlasMinSlotRows - rows + 1) / 2); }
+
 bool isJpegFile(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -52,7 +56,7 @@ bool stackableMaterial(const Scene& scene, const Material& m) {
     if (!tex.image || tex.image->empty() || tex.file.empty() || isJpegFile(tex.file)) return false;
     if (m.emissiveTexture != kNoId && m.emissiveTexture != m.texture) return false;
     if (m.alphaMode == AlphaMode::Blend) return false; // see StackedAtlas.h "Which textures"
-    return tex.image->height + 2 * kAtlasPadRows <= kAtlasPageRows &&
+    return tex.image->height + 2 * padOf(tex.image->height) <= kAtlasPageRows &&
            tex.image->width <= kAtlasPageRows;
 }
 
@@ -71,7 +75,7 @@ void fillBand(const RgbaImage& tex, const AtlasBand& band, RgbaImage& page) {
     };
     const glm::u8vec4 meanTexel(byte(linearToSrgb(mean.r)), byte(linearToSrgb(mean.g)),
                                 byte(linearToSrgb(mean.b)), byte(mean.a));
-    const int pad = kAtlasPadRows;
+    const int pad = padOf(band.rows);
     for (int r = -pad; r < band.rows + pad; ++r) {
         std::uint8_t* to = &page.pixels[static_cast<std::size_t>(band.top + r) * page.width * 4];
         if (r < -kAtlasWrapRows || r >= band.rows + kAtlasWrapRows) {
@@ -225,7 +229,8 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
     std::vector<std::vector<Id>> onPage;
     std::vector<int> pageWidth, pageRows;
     for (std::size_t i : order) {
-        const int w = widthOf(i), need = scene.textures[used[i]].image->height + 2 * kAtlasPadRows;
+        const int w = widthOf(i), rows = scene.textures[used[i]].image->height,
+                  need = rows + 2 * padOf(rows);
         if (pageWidth.empty() || pageWidth.back() != w || pageRows.back() + need > kAtlasPageRows) {
             pageWidth.push_back(w);
             pageRows.push_back(0);
@@ -260,11 +265,11 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
             const RgbaImage& img = *scene.textures[t].image;
             AtlasBand& b = byTexture_[t];
             b.page = static_cast<int>(p);
-            b.top = top + kAtlasPadRows;
+            b.top = top + padOf(img.height);
             b.rows = img.height;
             b.repeat = width / img.width;
             if (pixels) fillBand(img, b, page);
-            top += img.height + 2 * kAtlasPadRows;
+            top += img.height + 2 * padOf(img.height);
         }
     }
 }

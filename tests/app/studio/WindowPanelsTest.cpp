@@ -156,7 +156,9 @@ TEST_F(WindowPanels, LegendExplainsTheColoursOfClustersModeAndOfTheDepthTint) {
     const int depth = first.mid(6).section(QLatin1Char(' '), 0, 0).toInt();
     EXPECT_LE(depth, 1);
     EXPECT_EQ(tint[1].color, widgets::depthColor(depth));
-    if (depth == 0) EXPECT_EQ(first, QStringLiteral("Depth 0 (root)"));
+    if (depth == 0) {
+        EXPECT_EQ(first, QStringLiteral("Depth 0 (root)"));
+    }
     // Untinted, nothing needs explaining.
     window->model()->setTintByDepth(false);
     window->viewport()->grabFrame();
