@@ -56,11 +56,7 @@ protected:
     void SetUp() override {
         window = openWindow();
         ASSERT_NE(window, nullptr);
-        window->openFiles({});
-        ASSERT_TRUE(waitUntil([this] { return window->model()->scene() != nullptr; }));
-        auto* undo = window->session()->undo();
-        ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(kDefaultBake, "cache", false)));
-        ASSERT_TRUE(undo->execute(std::make_unique<SetParameter>(kDefaultBake, "threads", 2)));
+        ASSERT_TRUE(openSampleWithoutCache(*window));
     }
     void build() {
         window->findChild<QAction*>(QStringLiteral("actionBuild"))->trigger();

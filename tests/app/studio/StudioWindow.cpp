@@ -67,6 +67,14 @@ std::function<bool(QDialog*)> clickButton(int standardButton) {
     };
 }
 
+bool openSampleWithoutCache(MainWindow& window) {
+    window.openFiles({});
+    if (!waitUntil([&] { return window.model()->scene() != nullptr; })) return false;
+    auto* undo = window.session()->undo();
+    return undo->execute(std::make_unique<SetParameter>(kDefaultBake, "cache", false)) &&
+           undo->execute(std::make_unique<SetParameter>(kDefaultBake, "threads", 2));
+}
+
 bool settled(const MainWindow& window) {
     const widgets::StudioModel* model = window.model();
     const PipelineGraph& g = window.session()->document().graph();

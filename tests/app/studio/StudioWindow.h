@@ -46,6 +46,11 @@ bool settled(const MainWindow& window);
 // Waits (two minutes at most) until settled().
 bool waitSettled(const MainWindow& window);
 
+// Opens the embedded sample scene in `window` (waiting for it) and sets the default Bake node to
+// bake without the disk cache on two threads, as an undoable edit each; false when the scene
+// did not load or an edit was refused.
+bool openSampleWithoutCache(MainWindow& window);
+
 // Writes a project over the embedded sample scene with the given edits to `path`: volume
 // AABB, k = 2, proxies without the disk cache on two threads, instance 3 excluded.
 void writeSampleProject(const QString& path);

@@ -75,6 +75,20 @@ void expectCover(const ClusterTree& tree, const ShardPlan& plan) {
     }
 }
 
+// Root R over four groups A, B, C, D 10 m apart; each holds two leaves of 200, 150, 100 and 50
+// triangles (one mesh placed twice). `groups` gets A..D.
+ClusterTree fourGroups(Scene& scene, std::vector<Id>& groups) {
+    test::TreeBuilder b(scene);
+    double x = 0.0;
+    for (int tris : {200, 150, 100, 50}) {
+        const Id mesh = scene.addMesh(triangles(tris));
+        groups.push_back(b.inner(
+            {b.leaf(place(scene, mesh, {x, 0, 0})), b.leaf(place(scene, mesh, {x, 1, 0}))}));
+        x += 10.0;
+    }
+    return b.finish(b.inner(groups));
+}
+
 } // namespace
 
 TEST(ShardPlan, BalancesEstimatedCostNotTheNumberOfSubtrees) {
@@ -83,17 +97,8 @@ TEST(ShardPlan, BalancesEstimatedCostNotTheNumberOfSubtrees) {
     // below R and filling 2 shards largest first: A -> 0, B -> 1, C -> 1 (300 < 400),
     // D -> 0: 500 each. Cutting deeper would move 100..400 more above the cut: not done.
     Scene scene;
-    test::TreeBuilder b(scene);
     std::vector<Id> groups;
-    double x = 0.0;
-    for (int tris : {200, 150, 100, 50}) {
-        const Id mesh = scene.addMesh(triangles(tris));
-        const Id l0 = b.leaf(place(scene, mesh, {x, 0, 0}));
-        const Id l1 = b.leaf(place(scene, mesh, {x, 1, 0}));
-        groups.push_back(b.inner({l0, l1}));
-        x += 10.0;
-    }
-    const ClusterTree tree = b.finish(b.inner(groups));
+    const ClusterTree tree = fourGroups(scene, groups);
     const ShardPlan plan = planShards(scene, tree, fastParams(), 2);
     EXPECT_EQ(plan.roots[0], (std::vector<Id>{groups[0], groups[3]}));
     EXPECT_EQ(plan.roots[1], (std::vector<Id>{groups[1], groups[2]}));
@@ -146,16 +151,8 @@ TEST(ShardPlan, MeasuredCostsReplaceTheEstimates) {
     // the unmeasured root costs 350 x 0.006 = 2.1 s. Balanced by seconds, the smallest group
     // by triangles is a shard alone: {D} 3 s, {A, B, C} 3 s.
     Scene scene;
-    test::TreeBuilder b(scene);
     std::vector<Id> groups;
-    double x = 0.0;
-    for (int tris : {200, 150, 100, 50}) {
-        const Id mesh = scene.addMesh(triangles(tris));
-        groups.push_back(b.inner(
-            {b.leaf(place(scene, mesh, {x, 0, 0})), b.leaf(place(scene, mesh, {x, 1, 0}))}));
-        x += 10.0;
-    }
-    const ClusterTree tree = b.finish(b.inner(groups));
+    const ClusterTree tree = fourGroups(scene, groups);
     const std::vector<std::uint64_t> keys = structuralKeys(scene, tree, fastParams());
     const MeasuredCosts measured{{keys[groups[0]], 1.0},
                                  {keys[groups[1]], 1.0},
