@@ -25,6 +25,11 @@ constexpr double kMinHalfExtent = 5e-4;
 // A shared mesh is instanced when the copies it saves hold at least this many triangles
 // (about what a glTF mesh, its accessors and node cost in JSON).
 constexpr std::size_t kInstanceTriangles = 256;
+
+// Whether a group stores a mesh its `leaves` show once and instances it (see above).
+bool worthInstancing(std::size_t meshTriangles, std::size_t leaves) {
+    return leaves >= 2 && meshTriangles * (leaves - 1) >= kInstanceTriangles;
+}
 // Position grid: 1/64 of the error budget (see the header).
 constexpr double kStepsPerBudget = 64.0;
 // A leaf's grid: 1/16384 of its diameter, 1/64 of the budget t * D / S at S / t = 256.
@@ -332,7 +337,7 @@ private:
             ++sides[scene_.instances[tree_.nodes[leaves[i]].instance].mesh][low[i] ? 0 : 1];
         for (const auto& [mesh, n] : sides)
             if (n[0] > 0 && n[1] > 0 &&
-                scene_.meshes[mesh].triangleCount() * (n[0] + n[1] - 1) >= kInstanceTriangles)
+                worthInstancing(scene_.meshes[mesh].triangleCount(), n[0] + n[1]))
                 return true;
         return false;
     }
@@ -379,7 +384,7 @@ private:
             const Mesh& mesh = meshOf(l);
             const std::size_t n = uses[scene_.instances[s.instance].mesh];
             const std::optional<Trs> trs = decomposeTrs(m);
-            s.merged = !(trs && n >= 2 && mesh.triangleCount() * (n - 1) >= kInstanceTriangles);
+            s.merged = !(trs && worthInstancing(mesh.triangleCount(), n));
             if (s.merged) {
                 s.matrix = m;
                 s.positionStep = leafStep(nodeDiameter(tree_.nodes[l]));

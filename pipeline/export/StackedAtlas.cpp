@@ -67,9 +67,8 @@ int pageWidthOf(int w) {
 // Copies `tex` into rows [band.top - pad, band.top + rows + pad) of `page` (StackedAtlas.h
 // "Filtering"): columns repeated, the kAtlasWrapRows rows next to the band wrapped, the rest
 // of the padding the texture's mean colour.
-void fillBand(const RgbaImage& tex, const AtlasBand& band, RgbaImage& page) {
+void fillBand(const RgbaImage& tex, const glm::vec4& mean, const AtlasBand& band, RgbaImage& page) {
     const std::size_t rowBytes = static_cast<std::size_t>(tex.width) * 4;
-    const glm::vec4 mean = meanLinearColor(tex);
     auto byte = [](float v) {
         return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
     };
@@ -249,12 +248,16 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
         pageWidth.erase(pageWidth.begin() + static_cast<std::ptrdiff_t>(p));
         pageRows.erase(pageRows.begin() + static_cast<std::ptrdiff_t>(p));
     }
+    // Each texture's mean, as its materials got it on import (Material::textureMean).
+    std::vector<glm::vec4> meanOf(scene.textures.size(), glm::vec4(1.0f));
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+        if (textureOf_[m] != kNoId) meanOf[textureOf_[m]] = scene.materials[m].textureMean;
     // Inside a page, bands by mean luminance: where distant mip levels blend a band with its
     // neighbours (StackedAtlas.h "Filtering"), the neighbours look alike.
     for (std::size_t p = 0; p < onPage.size(); ++p) {
         std::vector<std::pair<float, Id>> byLuminance;
         for (Id t : onPage[p]) {
-            const glm::vec4 mean = meanLinearColor(*scene.textures[t].image);
+            const glm::vec4& mean = meanOf[t];
             byLuminance.emplace_back(0.2126f * mean.r + 0.7152f * mean.g + 0.0722f * mean.b, t);
         }
         std::sort(byLuminance.begin(), byLuminance.end());
@@ -268,7 +271,7 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
             b.top = top + padOf(img.height);
             b.rows = img.height;
             b.repeat = width / img.width;
-            if (pixels) fillBand(img, b, page);
+            if (pixels) fillBand(img, meanOf[t], b, page);
             top += img.height + 2 * padOf(img.height);
         }
     }

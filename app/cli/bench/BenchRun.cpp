@@ -94,21 +94,17 @@ std::string formatCount(double v) {
 // Per-frame look of merged leaves: one merged primitive per look, as the package merges them
 // (TileContent.h: base colour, texture, alpha, sides, emission, and which vertex streams the
 // leaves carry).
-using MergeKey = std::tuple<std::array<float, 8>, const RgbaImage*, int, float, bool,
+// The factor and the texture stand for the colour (a leaf's colour is its factor times its
+// texture's mean), as the tile writes them; a stacked leaf's texture is its page.
+using MergeKey = std::tuple<std::array<float, 4>, const RgbaImage*, int, float, bool,
                             std::array<float, 6>, bool, bool, bool, bool>;
 
-MergeKey mergeKeyOf(const glm::vec4& color, const SurfaceLook& look, const Mesh& mesh) {
+MergeKey mergeKeyOf(const SurfaceLook& look, const Mesh& mesh) {
     const glm::vec4& f = look.factor;
     const glm::vec3 &e = look.emissive, &em = look.emissiveMean;
-    return {{color.r, color.g, color.b, color.a, f.r, f.g, f.b, f.a},
-            look.texture,
-            static_cast<int>(look.alphaMode),
-            look.alphaCutoff,
-            look.doubleSided,
-            {e.r, e.g, e.b, em.r, em.g, em.b},
-            look.emissiveIsTexture,
-            !mesh.normals.empty(),
-            !mesh.uvs.empty(),
+    return {{f.r, f.g, f.b, f.a},   look.texture,          static_cast<int>(look.alphaMode),
+            look.alphaCutoff,       look.doubleSided,      {e.r, e.g, e.b, em.r, em.g, em.b},
+            look.emissiveIsTexture, !mesh.normals.empty(), !mesh.uvs.empty(),
             !mesh.colors.empty()};
 }
 
@@ -176,11 +172,7 @@ void addPackageDrawables(Config& c, const Scene& scene, const StackedAtlases& at
                     c.layer, *mesh, scene.instanceTransform(i), instColor[i], look));
                 continue;
             }
-            // A stacked leaf's written colour is its factor (the page holds the texture): the
-            // tile merges on that, not on the factor times its texture's mean.
-            const glm::vec4 keyColor =
-                look.texture != instLook[i].texture ? look.factor : instColor[i];
-            auto [it, added] = merged.try_emplace(mergeKeyOf(keyColor, look, *mesh));
+            auto [it, added] = merged.try_emplace(mergeKeyOf(look, *mesh));
             if (added) {
                 Mesh& m = c.mergedMeshes.emplace_back();
                 m.name = "merged";

@@ -39,6 +39,7 @@ Id texturedMaterial(Scene& s, Id texture, AlphaMode alpha = AlphaMode::Opaque) {
     m.hasTexture = true;
     m.texture = texture;
     m.baseColorTexture = s.textures[texture].file;
+    m.textureMean = meanLinearColor(*s.textures[texture].image); // as the importers set it
     m.alphaMode = alpha;
     return s.addMaterial(m);
 }
