@@ -1,6 +1,9 @@
 # Every dependency comes from Debian 12's packages (scripts/install-deps.sh installs them).
 find_package(Threads REQUIRED)
-find_package(ZLIB REQUIRED)
+# libdeflate: the PNG writer's deflate (pipeline/io/ThirdPartyImpl.cpp), smaller and faster than
+# zlib's best level.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 find_package(glm REQUIRED)
 find_package(TBB REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)

@@ -8,7 +8,7 @@ PACKAGES=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools qt6-translations-l10n
   libvtk9-dev
-  libopenmesh-dev libtinygltf-dev libstb-dev zlib1g-dev libglm-dev libmeshoptimizer-dev libassimp-dev
+  libopenmesh-dev libtinygltf-dev libstb-dev libdeflate-dev libglm-dev libmeshoptimizer-dev libassimp-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
   libocct-foundation-dev libocct-ocaf-dev libocct-visualization-dev
   libopenvdb-dev libboost-iostreams-dev libtbb-dev nlohmann-json3-dev

@@ -23,7 +23,9 @@
 #include "pipeline/proxy/AtlasStep.h"
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/ContentHash.h"
+#include "pipeline/proxy/CopyParts.h"
 #include "pipeline/proxy/ProxyCache.h"
+#include "pipeline/proxy/ProxyFinish.h"
 #include "pipeline/proxy/ProxyLook.h"
 #include "pipeline/proxy/SloppyProxy.h"
 
@@ -32,7 +34,7 @@ namespace hlod {
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 11;
+constexpr std::uint64_t kBakeFormatVersion = 12;
 
 // CPU time of the calling thread (a node's measured cost, NodeBake::cpuSeconds).
 double threadCpuSeconds() {
@@ -274,6 +276,8 @@ struct BakeRun {
     // This run's proxies by key, finished or in the making: a node whose key another node is
     // baking waits for that proxy instead of baking a second copy.
     std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> bakedByKey;
+    // Decimated rigid copies by part key and budget (CopyParts.h), made once for every node.
+    std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> copiesByKey;
     std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0}, damaged{0};
     tbb::task_group group;
     TextureMips mips;                 // source texture pyramids, shared by every node's atlas
@@ -333,6 +337,81 @@ struct BakeRun {
         return found;
     }
 
+    // The decimated proxy of one input in its own frame within `budget` (CopyParts.h), made by
+    // the first node that needs it; the others wait for it.
+    ProxyMesh copyProxy(std::uint64_t partKey, const AggregatePart& part, double budget) {
+        ContentHash h(0x636f7079); // "copy"
+        hashOptions(h, params);
+        h.addValue(budget);
+        h.addValue(partKey);
+        const std::uint64_t key = h.digest();
+        std::shared_future<ProxyMesh> known;
+        std::shared_ptr<std::promise<ProxyMesh>> owner;
+        {
+            const std::lock_guard lock(bakedMutex);
+            const auto it = copiesByKey.find(key);
+            if (it != copiesByKey.end()) {
+                known = it->second;
+            } else {
+                owner = std::make_shared<std::promise<ProxyMesh>>();
+                copiesByKey.emplace(key, owner->get_future().share());
+            }
+        }
+        if (known.valid()) return known.get();
+        try {
+            AggregatePart own = part;
+            own.offset = glm::dvec3(0.0);
+            own.linear = glm::dmat3(1.0);
+            ProxyMesh made =
+                decimateProxy(aggregateParts(scene, std::span(&own, 1), glm::dvec3(0.0)),
+                              budget * kPartBudgetScale, params.decimate);
+            owner->set_value(made);
+            return made;
+        } catch (...) {
+            owner->set_exception(std::current_exception());
+            throw;
+        }
+    }
+
+    // The node's new proxy (makeProxy over its aggregated inputs); decimated, inputs that are
+    // rigid copies of each other are simplified once each and placed (CopyParts.h).
+    ProxyMesh makeNodeProxy(const NodeBake& nb, const std::vector<Id>& inputs,
+                            const std::vector<AggregatePart>& parts, const glm::dvec3& origin) {
+        auto joint = [&](std::span<const AggregatePart> some) {
+            return makeProxy(aggregateParts(scene, some, origin), nb.errorBudget, params, progress);
+        };
+        if (params.method != ProxyMethod::Decimate) return joint(parts);
+        std::vector<std::uint64_t> keys(inputs.size());
+        std::vector<glm::dmat3> linears(inputs.size());
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            keys[i] = result.nodes[inputs[i]].key;
+            linears[i] = parts[i].linear.value_or(glm::dmat3(0.0)); // unset: not rigid
+        }
+        const CopyGroups groups = groupRigidCopies(keys, linears);
+        if (groups.copies.empty()) return joint(parts);
+        ProxyMesh out;
+        out.origin = origin;
+        if (!groups.rest.empty()) {
+            std::vector<AggregatePart> rest;
+            for (std::size_t i : groups.rest)
+                rest.push_back(parts[i]);
+            appendPlaced(joint(rest), glm::dmat3(1.0), glm::dvec3(0.0), out);
+        }
+        for (const std::vector<std::size_t>& group : groups.copies) {
+            progress.throwIfCancelled();
+            const ProxyMesh copy =
+                copyProxy(keys[group.front()], parts[group.front()], nb.errorBudget);
+            for (std::size_t i : group)
+                appendPlaced(copy, *parts[i].linear, *parts[i].offset, out);
+        }
+        if (out.normals.size() != out.positions.size()) { // a part without: all recomputed
+            out.normals.clear();
+            finishProxy(out);
+        }
+        out.errorBound = static_cast<float>(nb.errorBudget);
+        return out;
+    }
+
     // The economy's decision (ProxyBaker.h), once the proxy is known.
     void decide(Id id, std::vector<Id>&& inputs) {
         NodeBake& nb = result.nodes[id];
@@ -373,8 +452,7 @@ struct BakeRun {
                 nb.reused = true;
                 ++reused;
             } else {
-                nb.proxy = makeProxy(aggregateParts(scene, parts, origin), nb.errorBudget, params,
-                                     progress);
+                nb.proxy = makeNodeProxy(nb, inputs, parts, origin);
                 store = true;
                 ++baked;
             }

@@ -18,7 +18,9 @@
 // quantised, BakeFrame.h) and keyed by that content, so clusters that are rigid copies of each
 // other (a plant built from repeated modules, translated and turned) bake to bit-identical
 // proxies: the second is a cache hit, also within one run without a disk cache. The proxy is
-// placed in the world by NodeBake::frame (proxy.origin is frame.origin).
+// placed in the world by NodeBake::frame (proxy.origin is frame.origin). Within one node, the
+// decimate method simplifies inputs that are turned copies of each other once, in their own
+// frame, and places the result (CopyParts.h; made once per run for every node that has them).
 //
 // Scheduling: a dependency-counting task graph on TBB (a node's task is spawned by the last of
 // its inner children to finish, leaves are ready at once), run in a task_arena of

@@ -65,13 +65,24 @@ TEST(Package, RootBoxHoldsTheSceneInZUp) {
     writePackage(tmp / "pkg", b.scene, b.tree, b.bake, b.params, {});
     const auto [mn, mx] = hlod::test::boxMinMax(
         readJson(tmp / "pkg" / "tileset.json")["root"]["boundingVolume"]["box"]);
-    // Sample yard: x in [-60, 60], y (up) in [-0.5, 12], z in [-40, 40]; Z-up: (x, -z, y).
-    // The box is padded by the quantisation grid (leaves: 1/16384 of their diameter, a few mm).
-    EXPECT_NEAR(mn.x, -60.0, 0.01);
-    EXPECT_NEAR(mx.x, 60.0, 0.01);
-    EXPECT_NEAR(mn.y, -40.0, 0.01);
-    EXPECT_NEAR(mn.z, -0.5, 0.01);
-    EXPECT_NEAR(mx.z, 12.0, 0.01);
+    // Sample yard: x in [-60, 60], y (up) in [-0.5, 12], z in [-40, 40], and the proxies, which
+    // may lie up to their budget outside it (a proxy within e of the originals both ways);
+    // Z-up: (x, -z, y). The box is padded by the quantisation grid (leaves: 1/16384 of their
+    // diameter, a few mm).
+    Aabb all;
+    all.expand(glm::dvec3(-60.0, -0.5, -40.0));
+    all.expand(glm::dvec3(60.0, 12.0, 40.0));
+    for (Id id = 0; id < b.tree.nodes.size(); ++id) {
+        const NodeBake& nb = b.bake.nodes[id];
+        if (b.tree.nodes[id].isLeaf() || nb.dissolved || nb.proxy.empty()) continue;
+        for (const glm::vec3& p : nb.proxy.positions)
+            all.expand(glm::dvec3(nb.frame.matrix() * glm::dvec4(glm::dvec3(p), 1.0)));
+    }
+    EXPECT_NEAR(mn.x, all.min.x, 0.01);
+    EXPECT_NEAR(mx.x, all.max.x, 0.01);
+    EXPECT_NEAR(mn.y, -all.max.z, 0.01);
+    EXPECT_NEAR(mn.z, all.min.y, 0.01);
+    EXPECT_NEAR(mx.z, all.max.y, 0.01);
     EXPECT_LE(mn.x, -60.0); // but never smaller than the scene
     EXPECT_GE(mx.z, 12.0);
 }

@@ -127,6 +127,67 @@ TEST(RigidCopies, TurnedCopiesOfAClusterAreBakedOnce) {
     }
 }
 
+// The root's inputs are the four modules' proxies, one key turned four ways (CopyParts.h): the
+// root simplifies the module proxy once in its own frame and places it four times, so its proxy
+// is four blocks, each block the first moved by the motion between the modules; it lies within
+// the root's budget of the original meshes both ways, the same for any thread count.
+TEST(RigidCopies, ARootOverTurnedCopiesSimplifiesOneAndPlacesItFourTimes) {
+    const Turned& t = turned();
+    const NodeBake& root = t.bake.nodes[t.tree.root];
+    ASSERT_FALSE(root.proxy.empty());
+    const std::size_t vertices = root.proxy.positions.size(),
+                      triangles = root.proxy.triangleCount();
+    // Fewer triangles than the module proxies it replaces (simplified at the root's budget).
+    EXPECT_LT(triangles, 4 * t.bake.nodes[t.modules[0]].proxy.triangleCount());
+    ASSERT_EQ(vertices % 4, 0u);
+    ASSERT_EQ(triangles % 4, 0u);
+    const std::size_t block = vertices / 4;
+    // Module m's first leaf (its frame's origin and turn) relative to module 0's.
+    auto leafWorld = [&](int m) {
+        return t.scene.instanceTransform(
+            t.tree.nodes[t.tree.nodes[t.modules[static_cast<std::size_t>(m)]].children[0]]
+                .instance);
+    };
+    const glm::dmat4 frame = root.frame.matrix();
+    for (int m = 1; m < 4; ++m) {
+        const glm::dmat4 motion = leafWorld(m) * glm::inverse(leafWorld(0));
+        double worst = 0.0;
+        for (std::size_t v = 0; v < block; ++v) {
+            const glm::dvec4 p0 = frame * glm::dvec4(glm::dvec3(root.proxy.positions[v]), 1.0);
+            const glm::dvec3 pm(frame *
+                                glm::dvec4(glm::dvec3(root.proxy.positions[m * block + v]), 1.0));
+            worst = std::max(worst, glm::length(glm::dvec3(motion * p0) - pm));
+        }
+        // Offsets sit on a grid of at most 1/1024 of the root's budget (BakeFrame.h): each
+        // block is where the rigid motion puts the first, to within that rounding.
+        EXPECT_LT(worst, root.errorBudget / 512.0) << "block " << m;
+    }
+    // Within the budget of the originals both ways (world space, brute force).
+    std::vector<glm::vec3> proxy, originals;
+    for (const glm::vec3& p : root.proxy.positions)
+        proxy.push_back(glm::vec3(frame * glm::dvec4(glm::dvec3(p), 1.0)));
+    std::vector<std::uint32_t> originalIdx;
+    for (const MeshInstance& inst : t.scene.instances) {
+        const Mesh& mesh = t.scene.meshes[inst.mesh];
+        const auto first = static_cast<std::uint32_t>(originals.size());
+        for (const glm::vec3& p : mesh.positions)
+            originals.push_back(
+                glm::vec3(t.scene.nodes[inst.node].world * glm::dvec4(glm::dvec3(p), 1.0)));
+        for (std::uint32_t i : mesh.indices)
+            originalIdx.push_back(first + i);
+    }
+    const double e = root.errorBudget * 1.0001; // float positions
+    EXPECT_LE(test::sampledDistance(proxy, root.proxy.indices, originals, originalIdx), e);
+    EXPECT_LE(test::sampledDistance(originals, originalIdx, proxy, root.proxy.indices), e);
+    EXPECT_EQ(root.proxy.errorBound, static_cast<float>(root.errorBudget));
+    // One thread bakes the same root proxy.
+    BakeParams one = t.params;
+    one.threads = 1;
+    const BakeResult again = bakeProxies(t.scene, t.tree, one);
+    EXPECT_EQ(again.nodes[t.tree.root].proxy.positions, root.proxy.positions);
+    EXPECT_EQ(again.nodes[t.tree.root].proxy.indices, root.proxy.indices);
+}
+
 TEST(RigidCopies, EachCopysFrameCarriesItsTurnAndPlacesTheProxyWhereItsModuleIs) {
     const Turned& t = turned();
     const NodeBake& first = t.bake.nodes[t.modules[0]];
