@@ -17,8 +17,8 @@ namespace {
 // uvs this close to a period's edge count as on it (float uvs of authored 0 and 1).
 constexpr double kPeriodSlack = 1e-5;
 
-// The whole periods a triangle may be moved by so its v lies in [0, 1]: [lo, hi] (lo > hi when
-// its v spans more than one period or a coordinate is not finite). u is left as it is: it
+// The whole periods a triangle may be moved by so its v lies in [0, periods]: [lo, hi] (lo > hi
+// when its v spans more than `periods` or a coordinate is not finite). u is left as it is: it
 // repeats in the page as in the texture, and a vertex shared by triangles moved alike is not
 // split.
 struct Shifts {
@@ -27,15 +27,23 @@ struct Shifts {
     bool has(double k) const { return k >= lo && k <= hi; }
 };
 
-Shifts shiftsOf(const Mesh& mesh, std::size_t t) {
-    double minV = INFINITY, maxV = -INFINITY;
+// The v range of triangle t; false when a coordinate is not finite.
+bool vRange(const Mesh& mesh, std::size_t t, double& minV, double& maxV) {
+    minV = INFINITY;
+    maxV = -INFINITY;
     for (int c = 0; c < 3; ++c) {
         const glm::vec2 uv = mesh.uvs[mesh.indices[t * 3 + c]];
-        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return {};
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return false;
         minV = std::min(minV, double(uv.y));
         maxV = std::max(maxV, double(uv.y));
     }
-    return {std::ceil(maxV - 1.0 - kPeriodSlack), std::floor(minV + kPeriodSlack)};
+    return true;
+}
+
+Shifts shiftsOf(const Mesh& mesh, std::size_t t, int periods) {
+    double minV, maxV;
+    if (!vRange(mesh, t, minV, maxV)) return {};
+    return {std::ceil(maxV - periods - kPeriodSlack), std::floor(minV + kPeriodSlack)};
 }
 
 // Rows above and below a band of `rows`: kAtlasPadRows, more for short textures so that every
@@ -60,13 +68,22 @@ bool stackableMaterial(const Scene& scene, const Material& m) {
            tex.image->width <= kAtlasPageRows;
 }
 
+// The most periods a band of a texture `rows` high may hold: kAtlasMaxPeriods, fewer where the
+// band would not fit a page.
+int maxPeriods(int rows) {
+    int k = kAtlasMaxPeriods;
+    while (k > 1 && rows * k + 2 * padOf(rows * k) > kAtlasPageRows)
+        --k;
+    return k;
+}
+
 int pageWidthOf(int w) {
     return w < kAtlasMinWidth && kAtlasMinWidth % w == 0 ? kAtlasMinWidth : w;
 }
 
-// Copies `tex` into rows [band.top - pad, band.top + rows + pad) of `page` (StackedAtlas.h
-// "Filtering"): columns repeated, the kAtlasWrapRows rows next to the band wrapped, the rest
-// of the padding the texture's mean colour.
+// Copies `tex` into rows [band.top - pad, band.top + rows * periods + pad) of `page`
+// (StackedAtlas.h "Filtering"): columns repeated, rows repeated `periods` times, the
+// kAtlasWrapRows rows next to the band wrapped, the rest of the padding the texture's mean.
 void fillBand(const RgbaImage& tex, const glm::vec4& mean, const AtlasBand& band, RgbaImage& page) {
     const std::size_t rowBytes = static_cast<std::size_t>(tex.width) * 4;
     auto byte = [](float v) {
@@ -74,10 +91,10 @@ void fillBand(const RgbaImage& tex, const glm::vec4& mean, const AtlasBand& band
     };
     const glm::u8vec4 meanTexel(byte(linearToSrgb(mean.r)), byte(linearToSrgb(mean.g)),
                                 byte(linearToSrgb(mean.b)), byte(mean.a));
-    const int pad = padOf(band.rows);
-    for (int r = -pad; r < band.rows + pad; ++r) {
+    const int span = band.rows * band.periods, pad = padOf(span);
+    for (int r = -pad; r < span + pad; ++r) {
         std::uint8_t* to = &page.pixels[static_cast<std::size_t>(band.top + r) * page.width * 4];
-        if (r < -kAtlasWrapRows || r >= band.rows + kAtlasWrapRows) {
+        if (r < -kAtlasWrapRows || r >= span + kAtlasWrapRows) {
             for (int x = 0; x < page.width; ++x)
                 std::memcpy(to + x * 4, &meanTexel[0], 4);
             continue;
@@ -91,11 +108,16 @@ void fillBand(const RgbaImage& tex, const glm::vec4& mean, const AtlasBand& band
 
 } // namespace
 
-bool fitsOnePeriod(const Mesh& mesh) {
-    if (mesh.uvs.size() != mesh.positions.size() || mesh.indices.empty()) return false;
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
-        if (!shiftsOf(mesh, t).any()) return false;
-    return true;
+int periodsNeeded(const Mesh& mesh) {
+    if (mesh.uvs.size() != mesh.positions.size() || mesh.indices.empty()) return 0;
+    double need = 1.0;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        double minV, maxV;
+        if (!vRange(mesh, t, minV, maxV)) return 0;
+        need = std::max(need, std::ceil(maxV - std::floor(minV + kPeriodSlack) - kPeriodSlack));
+        if (need > kAtlasPageRows) return 0; // no band is that tall
+    }
+    return static_cast<int>(need);
 }
 
 std::optional<StackedUvs> stackUvs(const Mesh& mesh, const AtlasBand& band, int pageRows) {
@@ -110,17 +132,17 @@ std::optional<StackedUvs> stackUvs(const Mesh& mesh, const AtlasBand& band, int 
     };
     std::vector<First> first(mesh.positions.size());
     std::map<std::pair<std::uint32_t, double>, std::uint32_t> more;
-    const double rows = band.rows, top = band.top, repeat = band.repeat;
+    const double rows = band.rows, top = band.top, repeat = band.repeat, periods = band.periods;
     auto emit = [&](std::uint32_t v, double shift) {
         out.source.push_back(v);
         const glm::vec2 uv = mesh.uvs[v];
-        const double t = std::clamp(uv.y - shift, 0.0, 1.0);
+        const double t = std::clamp(uv.y - shift, 0.0, periods);
         out.uvs.emplace_back(static_cast<float>(uv.x / repeat),
                              static_cast<float>((top + t * rows) / pageRows));
         return static_cast<std::uint32_t>(out.source.size() - 1);
     };
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const Shifts shifts = shiftsOf(mesh, t);
+        const Shifts shifts = shiftsOf(mesh, t, band.periods);
         if (!shifts.any()) return std::nullopt;
         // Where a triangle on a period's edge may move by two amounts, the one its vertices
         // already have (no split).
@@ -174,10 +196,15 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
     for (std::size_t m = 0; m < scene.materials.size(); ++m)
         if (stackableMaterial(scene, scene.materials[m]))
             textureOf_[m] = scene.materials[m].texture;
+    // The periods each mesh's triangles span; a mesh stacks when its texture's band may be
+    // that tall (StackedAtlas.h "V").
+    std::vector<int> periodsOf(scene.textures.size(), 1), needOf(scene.meshes.size(), 0);
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const Mesh& mesh = scene.meshes[i];
-        meshStacks_[i] = mesh.material < textureOf_.size() && textureOf_[mesh.material] != kNoId &&
-                         fitsOnePeriod(mesh);
+        const Id t = mesh.material < textureOf_.size() ? textureOf_[mesh.material] : kNoId;
+        if (t == kNoId) continue;
+        needOf[i] = periodsNeeded(mesh);
+        meshStacks_[i] = needOf[i] >= 1 && needOf[i] <= maxPeriods(scene.textures[t].image->height);
     }
     // A texture that some mesh must read on its own is stored twice if it is stacked too: only
     // when the meshes that fit hold most of its triangles (StackedAtlas.h "Which textures").
@@ -191,7 +218,10 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         if (!meshStacks_[i]) continue;
         const Id t = textureOf_[scene.meshes[i].material];
-        if (own[t] > fitting[t]) meshStacks_[i] = false;
+        if (own[t] > fitting[t])
+            meshStacks_[i] = false;
+        else
+            periodsOf[t] = std::max(periodsOf[t], needOf[i]);
     }
     // Where each texture is used: the mean of its instances' box centres.
     std::vector<glm::dvec3> sum(scene.textures.size(), glm::dvec3(0.0));
@@ -228,8 +258,8 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
     std::vector<std::vector<Id>> onPage;
     std::vector<int> pageWidth, pageRows;
     for (std::size_t i : order) {
-        const int w = widthOf(i), rows = scene.textures[used[i]].image->height,
-                  need = rows + 2 * padOf(rows);
+        const int w = widthOf(i), span = scene.textures[used[i]].image->height * periodsOf[used[i]],
+                  need = span + 2 * padOf(span);
         if (pageWidth.empty() || pageWidth.back() != w || pageRows.back() + need > kAtlasPageRows) {
             pageWidth.push_back(w);
             pageRows.push_back(0);
@@ -268,11 +298,13 @@ StackedAtlases::StackedAtlases(const Scene& scene, bool pixels)
             const RgbaImage& img = *scene.textures[t].image;
             AtlasBand& b = byTexture_[t];
             b.page = static_cast<int>(p);
-            b.top = top + padOf(img.height);
+            const int span = img.height * periodsOf[t];
+            b.top = top + padOf(span);
             b.rows = img.height;
             b.repeat = width / img.width;
+            b.periods = periodsOf[t];
             if (pixels) fillBand(img, meanOf[t], b, page);
-            top += img.height + 2 * padOf(img.height);
+            top += span + 2 * padOf(span);
         }
     }
 }

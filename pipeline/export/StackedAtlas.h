@@ -12,11 +12,14 @@
 //   W = kAtlasMinWidth, its columns repeated W / w times. U keeps repeating: u' = u * w / W
 //   samples column u * w mod w of the texture, also across the seam (the page wraps at W, a
 //   multiple of w).
-// - V: each triangle is moved by whole periods so its v lies in [0, 1] (the texture repeats,
-//   so that shows the same texels), then v' = (top + v * h) / H. A triangle whose v spans
-//   more than one period cannot be moved into a band: such a mesh keeps its own texture.
-//   Vertices that two triangles move differently are split (a triangle on a period's edge
-//   takes the move its vertices already have).
+// - V: each triangle is moved by whole periods so its v lies in [0, k] (the texture repeats,
+//   so that shows the same texels), then v' = (top + v * h) / H, where the band holds the
+//   texture's h rows k times over: k is the most periods any triangle of the texture's meshes
+//   spans from a period's start (a kerb strip running v 0.2..2.7 needs 3), at most
+//   kAtlasMaxPeriods (a mesh whose triangles span more keeps its own texture: terrain tiled
+//   over dozens of periods would multiply the page's texels). Vertices that two triangles
+//   move differently are split (a triangle on a period's edge takes the move its vertices
+//   already have).
 // - Filtering: each band is padded above and below. The kAtlasWrapRows rows next to it hold
 //   the texture's rows wrapped (its last rows above, its first below), so bilinear filtering
 //   at a band's edge reads what the repeating texture holds there, exactly at mip level 0 and
@@ -69,13 +72,16 @@ inline constexpr int kAtlasPadRows = 32;
 inline constexpr int kAtlasWrapRows = 8;
 inline constexpr int kAtlasMinSlotRows = 256;
 inline constexpr int kAtlasMinWidth = 256;
+inline constexpr int kAtlasMaxPeriods = 4;
 
-// Where a texture sits: rows [top, top + rows) of `page`, its columns repeated `repeat` times.
+// Where a texture sits: rows [top, top + rows * periods) of `page` (the texture's `rows` rows
+// `periods` times over), its columns repeated `repeat` times.
 struct AtlasBand {
     int page = -1;
     int top = 0;
     int rows = 0;
     int repeat = 1;
+    int periods = 1;
 };
 
 // A mesh's uvs moved into a band: vertex i of the result is vertex source[i] of the mesh.
@@ -85,10 +91,12 @@ struct StackedUvs {
     std::vector<std::uint32_t> indices;
 };
 
-// True when every triangle's v lies within one period (after moving it by whole periods).
-bool fitsOnePeriod(const Mesh& mesh);
+// The fewest whole periods every triangle's v lies within after moving it by whole periods (1:
+// one period); 0 when the mesh has no uvs or a coordinate is not finite.
+int periodsNeeded(const Mesh& mesh);
 
-// The mesh's uvs in `band` of a page `pageRows` high; nullopt when !fitsOnePeriod(mesh).
+// The mesh's uvs in `band` of a page `pageRows` high; nullopt when a triangle's v spans more
+// than band.periods (periodsNeeded(mesh) > band.periods).
 std::optional<StackedUvs> stackUvs(const Mesh& mesh, const AtlasBand& band, int pageRows);
 
 // `mesh` with every stream gathered through `stacked` (uvs and indices from it).
@@ -101,7 +109,7 @@ public:
 
     // The band of `material`'s texture; null when its leaves keep their own texture.
     const AtlasBand* band(Id material) const;
-    // Whether `mesh` is drawn from its material's band (it has uvs that fit one period).
+    // Whether `mesh` is drawn from its material's band (its uvs fit the band's periods).
     bool stacks(Id mesh) const { return mesh < meshStacks_.size() && meshStacks_[mesh]; }
     const std::vector<RgbaImage>& pages() const { return pages_; }
 

@@ -91,7 +91,7 @@ TEST(StackedAtlas, AVertexTwoTrianglesMoveDifferentlyIsSplit) {
     m.normals.assign(4, {0, 0, 1});
     m.uvs = {{0.0f, 0.5f}, {0.5f, 1.0f}, {0.0f, 1.0f}, {0.5f, 1.5f}};
     m.indices = {0, 1, 2, 2, 1, 3};
-    EXPECT_TRUE(fitsOnePeriod(m));
+    EXPECT_EQ(periodsNeeded(m), 1);
     AtlasBand band{0, 0, 10, 1};
     const std::optional<StackedUvs> s = stackUvs(m, band, 10);
     ASSERT_TRUE(s);
@@ -104,11 +104,26 @@ TEST(StackedAtlas, AVertexTwoTrianglesMoveDifferentlyIsSplit) {
     EXPECT_EQ(gathered.positions[4], m.positions[1]);
 }
 
-TEST(StackedAtlas, ATriangleOverMoreThanOnePeriodKeepsItsTexture) {
-    // A road strip whose v runs 0..3 along it repeats the texture: no band holds that.
-    const Mesh m = triangle({{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 3.0f}}, 0);
-    EXPECT_FALSE(fitsOnePeriod(m));
-    EXPECT_FALSE(stackUvs(m, AtlasBand{0, 0, 8, 1}, 8));
+TEST(StackedAtlas, ATriangleOverSeveralPeriodsNeedsABandAsTall) {
+    // A road strip whose v runs 0.5..2.75 along it repeats the texture: a band of one period
+    // cannot hold it; a band of the texture three times over, from v 0, holds it as it is.
+    const Mesh m = triangle({{0.0f, 0.5f}, {1.0f, 0.5f}, {0.0f, 2.75f}}, 0);
+    EXPECT_EQ(periodsNeeded(m), 3);
+    EXPECT_FALSE(stackUvs(m, AtlasBand{0, 0, 8, 1, 1}, 8));
+    EXPECT_FALSE(stackUvs(m, AtlasBand{0, 0, 8, 1, 2}, 16));
+    // Rows 10..33 of a 40-row page: v' = (10 + v * 8) / 40.
+    const std::optional<StackedUvs> s = stackUvs(m, AtlasBand{0, 10, 8, 1, 3}, 40);
+    ASSERT_TRUE(s);
+    EXPECT_FLOAT_EQ(s->uvs[0].y, (10.0f + 4.0f) / 40.0f);
+    EXPECT_FLOAT_EQ(s->uvs[2].y, (10.0f + 22.0f) / 40.0f);
+    // The same strip moved by seven periods moves back by seven.
+    const Mesh far = triangle({{0.0f, 7.5f}, {1.0f, 7.5f}, {0.0f, 9.75f}}, 0);
+    EXPECT_EQ(periodsNeeded(far), 3);
+    EXPECT_EQ(stackUvs(far, AtlasBand{0, 10, 8, 1, 3}, 40)->uvs, s->uvs);
+    // No uvs, or a coordinate that is not a number: no band.
+    Mesh bad = m;
+    bad.uvs[1].y = NAN;
+    EXPECT_EQ(periodsNeeded(bad), 0);
 }
 
 TEST(StackedAtlas, PngTexturesShareAPageBlendedAndJpegsDoNot) {
@@ -126,12 +141,13 @@ TEST(StackedAtlas, PngTexturesShareAPageBlendedAndJpegsDoNot) {
     place(s, triangle(inOnePeriod, mNarrow), {2, 0, 0});
     place(s, triangle(inOnePeriod, mGlass), {4, 0, 0});
     place(s, triangle(inOnePeriod, mPhoto), {6, 0, 0});
-    // The road: most of its triangles repeat along v (a band cannot hold them), one fits. It
+    // The road: most of its triangles repeat along v over more periods than a band may hold
+    // (kAtlasMaxPeriods), one fits. It
     // would be stored twice if stacked: it keeps its own file. The kerb: most fit, one does
     // not: stacked, and that one reads its own file.
     const Id kerb = s.addTexture(codedTexture(64, 8, 6, "kerb.png"));
     const Id mKerb = texturedMaterial(s, kerb);
-    const std::vector<glm::vec2> alongV{{0, 0}, {1, 0}, {0, 4}};
+    const std::vector<glm::vec2> alongV{{0, 0}, {1, 0}, {0, kAtlasMaxPeriods + 2}};
     place(s, triangle(alongV, mRoad), {8, 0, 0});  // mesh 4
     place(s, triangle(alongV, mRoad), {10, 0, 0}); // mesh 5
     place(s, triangle(inOnePeriod, mRoad), {12, 0, 0});
@@ -174,6 +190,33 @@ TEST(StackedAtlas, PngTexturesShareAPageBlendedAndJpegsDoNot) {
     const AtlasBand& w = *atlases.band(mWide);
     EXPECT_EQ(w.repeat, 1);
     EXPECT_EQ(page.at(255, w.top + 15), glm::u8vec4(255, 15, 1, 255));
+}
+
+TEST(StackedAtlas, ATextureWhoseTrianglesSpanThreePeriodsSitsThreeTimesOver) {
+    // A kerb texture whose strips run v 0.25..2.5 (three periods from v 0) and a wall in one
+    // period: the kerb's band holds its 8 rows three times, and the strip reads them there.
+    Scene s;
+    const Id mKerb = texturedMaterial(s, s.addTexture(codedTexture(64, 8, 1, "kerb.png")));
+    const Id mWall = texturedMaterial(s, s.addTexture(codedTexture(64, 8, 2, "wall.png")));
+    place(s, triangle({{0.0f, 0.25f}, {1.0f, 0.25f}, {0.0f, 2.5f}}, mKerb), {0, 0, 0});
+    place(s, triangle({{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}, mWall), {2, 0, 0});
+    s.updateWorldTransforms();
+    const StackedAtlases atlases(s);
+    ASSERT_EQ(atlases.pages().size(), 1u);
+    EXPECT_TRUE(atlases.stacks(0));
+    const AtlasBand& k = *atlases.band(mKerb);
+    EXPECT_EQ(k.periods, 3);
+    EXPECT_EQ(k.rows, 8);
+    EXPECT_EQ(atlases.band(mWall)->periods, 1);
+    const RgbaImage& page = atlases.pages()[0];
+    // Row r of the band is row r mod 8 of the texture, wrapped rows next to it.
+    for (int r = -kAtlasWrapRows; r < 3 * 8 + kAtlasWrapRows; ++r)
+        EXPECT_EQ(page.at(70, k.top + r), glm::u8vec4(6, (r + 8) % 8, 1, 255)) << r;
+    // The strip's uvs span rows top + 2 .. top + 20 (v 0.25 and 2.5 of 8-row periods).
+    const std::optional<StackedUvs> uvs = stackUvs(s.meshes[0], k, page.height);
+    ASSERT_TRUE(uvs);
+    EXPECT_FLOAT_EQ(uvs->uvs[0].y * page.height, k.top + 2.0f);
+    EXPECT_FLOAT_EQ(uvs->uvs[2].y * page.height, k.top + 20.0f);
 }
 
 TEST(StackedAtlas, CutOutsShareAPageOfTheirOwn) {
