@@ -317,20 +317,29 @@ struct BakeRun {
     // This run's proxy with the same key (waiting while another node makes it), or the disk
     // cache's; otherwise `owner` is set and the caller makes it and must fulfil it. A damaged
     // cache file counts as a miss (and is replaced by the store after the bake).
-    std::optional<ProxyMesh> reuse(std::uint64_t key,
-                                   std::shared_ptr<std::promise<ProxyMesh>>& owner) {
+    // The proxy made (or being made: waited for) under `key` in `made`; otherwise nullopt and
+    // `owner` is set: the caller makes it and must fulfil it. Rethrows when the maker failed.
+    std::optional<ProxyMesh>
+    madeOrClaim(std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>>& made,
+                std::uint64_t key, std::shared_ptr<std::promise<ProxyMesh>>& owner) {
         std::shared_future<ProxyMesh> known;
         {
             const std::lock_guard lock(bakedMutex);
-            const auto it = bakedByKey.find(key);
-            if (it != bakedByKey.end()) {
+            const auto it = made.find(key);
+            if (it != made.end()) {
                 known = it->second;
             } else {
                 owner = std::make_shared<std::promise<ProxyMesh>>();
-                bakedByKey.emplace(key, owner->get_future().share());
+                made.emplace(key, owner->get_future().share());
             }
         }
-        if (known.valid()) return known.get(); // rethrows when the maker failed
+        if (known.valid()) return known.get();
+        return std::nullopt;
+    }
+
+    std::optional<ProxyMesh> reuse(std::uint64_t key,
+                                   std::shared_ptr<std::promise<ProxyMesh>>& owner) {
+        if (std::optional<ProxyMesh> known = madeOrClaim(bakedByKey, key, owner)) return known;
         bool bad = false;
         std::optional<ProxyMesh> found = cache.load(key, &bad);
         if (bad) ++damaged;
@@ -344,20 +353,9 @@ struct BakeRun {
         hashOptions(h, params);
         h.addValue(budget);
         h.addValue(partKey);
-        const std::uint64_t key = h.digest();
-        std::shared_future<ProxyMesh> known;
         std::shared_ptr<std::promise<ProxyMesh>> owner;
-        {
-            const std::lock_guard lock(bakedMutex);
-            const auto it = copiesByKey.find(key);
-            if (it != copiesByKey.end()) {
-                known = it->second;
-            } else {
-                owner = std::make_shared<std::promise<ProxyMesh>>();
-                copiesByKey.emplace(key, owner->get_future().share());
-            }
-        }
-        if (known.valid()) return known.get();
+        if (std::optional<ProxyMesh> known = madeOrClaim(copiesByKey, h.digest(), owner))
+            return std::move(*known);
         try {
             AggregatePart own = part;
             own.offset = glm::dvec3(0.0);
