@@ -314,9 +314,6 @@ struct BakeRun {
         return parts;
     }
 
-    // This run's proxy with the same key (waiting while another node makes it), or the disk
-    // cache's; otherwise `owner` is set and the caller makes it and must fulfil it. A damaged
-    // cache file counts as a miss (and is replaced by the store after the bake).
     // The proxy made (or being made: waited for) under `key` in `made`; otherwise nullopt and
     // `owner` is set: the caller makes it and must fulfil it. Rethrows when the maker failed.
     std::optional<ProxyMesh>
@@ -337,6 +334,9 @@ struct BakeRun {
         return std::nullopt;
     }
 
+    // This run's proxy with the same key (waiting while another node makes it), or the disk
+    // cache's; otherwise `owner` is set and the caller makes it and must fulfil it. A damaged
+    // cache file counts as a miss (and is replaced by the store after the bake).
     std::optional<ProxyMesh> reuse(std::uint64_t key,
                                    std::shared_ptr<std::promise<ProxyMesh>>& owner) {
         if (std::optional<ProxyMesh> known = madeOrClaim(bakedByKey, key, owner)) return known;
