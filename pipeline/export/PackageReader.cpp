@@ -18,12 +18,19 @@ namespace fs = std::filesystem;
 namespace {
 
 nlohmann::json readJson(const fs::path& file) {
+    // A folder opens as a stream on Linux, and reading it throws std::ios_base::failure from
+    // the stream buffer (found by fuzz_package: a section named "hlod.json/").
+    std::error_code ec;
+    if (fs::exists(file, ec) && !fs::is_regular_file(file, ec))
+        throw Error(ErrorCode::Malformed, file, "is not a file");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw Error(ErrorCode::Malformed, file, "missing from the package");
     try {
         return nlohmann::json::parse(in);
     } catch (const nlohmann::json::exception& e) {
         throw Error(ErrorCode::Malformed, file, std::string("bad JSON: ") + e.what());
+    } catch (const std::ios_base::failure& e) {
+        throw Error(ErrorCode::Io, file, std::string("cannot be read: ") + e.what());
     }
 }
 
