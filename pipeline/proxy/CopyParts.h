@@ -27,8 +27,6 @@
 
 #include <glm/glm.hpp>
 
-#include "pipeline/proxy/ProxyMesh.h"
-
 namespace hlod {
 
 inline constexpr double kRigidTolerance = 1e-7;
@@ -46,12 +44,5 @@ struct CopyGroups {
 };
 CopyGroups groupRigidCopies(std::span<const std::uint64_t> keys,
                             std::span<const glm::dmat3> linears);
-
-// Appends a finished proxy `part` (positions relative to its own frame) placed by the rigid
-// `linear` and `offset` (the node's frame, relative to its origin): positions, normals turned
-// with it, colours and triangles, as one block after what `out` holds. uvs are not carried
-// (atlases are baked on the finished node). `out.errorBound` becomes the larger of the two.
-void appendPlaced(const ProxyMesh& part, const glm::dmat3& linear, const glm::dvec3& offset,
-                  ProxyMesh& out);
 
 } // namespace hlod

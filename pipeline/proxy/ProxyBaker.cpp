@@ -28,13 +28,14 @@
 #include "pipeline/proxy/ProxyFinish.h"
 #include "pipeline/proxy/ProxyLook.h"
 #include "pipeline/proxy/SloppyProxy.h"
+#include "pipeline/scene/AppendPlaced.h"
 
 namespace hlod {
 
 namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
-constexpr std::uint64_t kBakeFormatVersion = 12;
+constexpr std::uint64_t kBakeFormatVersion = 13;
 
 // CPU time of the calling thread (a node's measured cost, NodeBake::cpuSeconds).
 double threadCpuSeconds() {
@@ -393,14 +394,17 @@ struct BakeRun {
             std::vector<AggregatePart> rest;
             for (std::size_t i : groups.rest)
                 rest.push_back(parts[i]);
-            appendPlaced(joint(rest), glm::dmat3(1.0), glm::dvec3(0.0), out);
+            appendPlaced(out, joint(rest), glm::dmat4(1.0));
         }
         for (const std::vector<std::size_t>& group : groups.copies) {
             progress.throwIfCancelled();
             const ProxyMesh copy =
                 copyProxy(keys[group.front()], parts[group.front()], nb.errorBudget);
-            for (std::size_t i : group)
-                appendPlaced(copy, *parts[i].linear, *parts[i].offset, out);
+            for (std::size_t i : group) {
+                glm::dmat4 placed(*parts[i].linear);
+                placed[3] = glm::dvec4(*parts[i].offset, 1.0);
+                appendPlaced(out, copy, placed);
+            }
         }
         if (out.normals.size() != out.positions.size()) { // a part without: all recomputed
             out.normals.clear();
