@@ -89,7 +89,13 @@ std::vector<CommandSpec> makeCommands() {
                   {"PROJECT.hlodproj", "A project saved by HLOD Studio (its scene, parameters "
                                        "and hand edits)."}},
                  {N::Import, N::Cluster, N::Bake},
-                 {{"--shards", "", "N", "Number of shards (1 to 100000).", ""}, kExport, kJson}});
+                 {{"--shards", "", "N", "Number of shards (1 to 100000).", ""},
+                  {"--compression", "", "meshopt|none",
+                   "Compression of the tiles the shards write for the final build (give the final "
+                   "build the same).",
+                   "meshopt"},
+                  kExport,
+                  kJson}});
     v.push_back(
         {"bench",
          runBench,

@@ -105,6 +105,24 @@ std::vector<NodeId> pickExports(PipelineGraph& graph, const std::optional<std::s
     return exports;
 }
 
+std::optional<LeanInputs> leanInputsOf(const PipelineGraph& graph, NodeId clusterNode,
+                                       GlbCompression compression) {
+    const GraphNode& cluster = graph.node(clusterNode);
+    const NodeId importNode = graph.upstreamOf(clusterNode);
+    if (importNode == kNoNode || !cluster.edits.empty()) return std::nullopt;
+    const GraphNode& import = graph.node(importNode);
+    LeanInputs in;
+    for (const std::filesystem::path& p : import.sources) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(p, ec)) return std::nullopt;
+        in.sources.push_back(std::filesystem::absolute(p).lexically_normal());
+    }
+    in.importParams = paramsToJson(NodeKind::Import, import.params);
+    in.clusterParams = paramsToJson(NodeKind::Cluster, cluster.params);
+    in.compression = compression;
+    return in;
+}
+
 ProcessUsage processUsage() {
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);

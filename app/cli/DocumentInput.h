@@ -12,6 +12,7 @@
 
 #include "Args.h"
 #include "pipeline/doc/Document.h"
+#include "pipeline/graph/LeanFinal.h"
 
 namespace hlod::cli {
 
@@ -30,6 +31,13 @@ std::vector<NodeId> pickExports(PipelineGraph& graph, const std::optional<std::s
 
 // The output flag among the parsed flags (-o / --output), and the flags without it.
 std::optional<std::string> takeOutputFlag(ParamFlags& flags);
+
+// What the lean final step of a distributed bake matches a plan and a final build by
+// (pipeline/graph/LeanFinal.h): the Import node upstream of `clusterNode` (its scene files,
+// absolute, and parameters) and the Cluster node's parameters, with `compression`. Nullopt when
+// the branch cannot be matched without importing: hand edits, or a source that is not a file.
+std::optional<LeanInputs> leanInputsOf(const PipelineGraph& graph, NodeId clusterNode,
+                                       GlbCompression compression);
 
 // This process so far: CPU seconds (user + system) and peak resident memory in bytes.
 struct ProcessUsage {

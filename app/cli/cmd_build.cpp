@@ -33,6 +33,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <malloc.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,7 +45,9 @@
 #include "DocumentInput.h"
 #include "ProgressBar.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/export/Geo.h"
 #include "pipeline/graph/BakePlan.h"
+#include "pipeline/graph/LeanFinal.h"
 #include "pipeline/proxy/BakeStats.h"
 
 namespace hlod::cli {
@@ -212,8 +216,15 @@ std::pair<int, int> parseShard(const std::string& text) {
     return {i, n};
 }
 
+// Farm steps run on machines sized by their peak memory: blocks of 1 MB and more are given back
+// to the system as soon as they are freed (glibc otherwise raises the threshold after such a
+// free and keeps later blocks in its arenas). Engine tiled 100x: shard 344 -> 313 MB, lean final
+// step 328 -> 285 MB, for about 3 % more CPU (docs/benchmarks.md, "Distributed bake").
+void returnLargeBlocksAtOnce() { mallopt(M_MMAP_THRESHOLD, 1 << 20); }
+
 // `hlod build --shard I/N --cache DIR`: one shard of the plan in DIR.
 int runShardBuild(const Args& args, const ParamFlags& flags) {
+    returnLargeBlocksAtOnce();
     if (!args.positionals().empty()) {
         throw Error(ErrorCode::InvalidArgument,
                     "a shard takes its scene from the plan: hlod build --shard I/N --cache DIR (no "
@@ -298,6 +309,121 @@ PlanCheck checkPlanBeforeBake(PipelineGraph& graph, NodeId exportNode, const Pro
     return check;
 }
 
+// The final step of a distributed bake without importing (pipeline/graph/LeanFinal.h), when the
+// cache folder holds a lean plan made from exactly this build's inputs; nullopt otherwise (the
+// build runs its graph, and a classic plan is checked there).
+std::optional<int> runLeanFinalStep(const PipelineGraph& graph, NodeId exportNode, bool json) {
+    const GraphNode& exportGraphNode = graph.node(exportNode);
+    const NodeId bakeNode = graph.upstreamOf(exportNode);
+    if (bakeNode == kNoNode || graph.node(bakeNode).kind != NodeKind::Bake) return std::nullopt;
+    const NodeId clusterNode = graph.upstreamOf(bakeNode);
+    if (clusterNode == kNoNode || graph.node(clusterNode).kind != NodeKind::Cluster)
+        return std::nullopt;
+    const GlbCompression compression =
+        glbCompressionFromString(paramText(exportGraphNode.params, "compression"));
+    const std::optional<LeanInputs> given = leanInputsOf(graph, clusterNode, compression);
+    if (!given) return std::nullopt;
+    LeanFinalRequest request;
+    request.given = *given;
+    request.bakeValues = graph.node(bakeNode).params;
+    const BakeParams bp = bakeParamsFrom(request.bakeValues);
+    request.cacheDir = bp.cacheDir;
+    request.threads = bp.threads;
+    request.output = paramText(exportGraphNode.params, "output");
+    request.cluster = clusterParamsFrom(graph.node(clusterNode).params);
+    const GraphNode& importNode = graph.node(graph.upstreamOf(clusterNode));
+    for (const auto& p : importNode.sources)
+        request.inputs.push_back(p.string());
+    if (request.inputs.empty()) request.inputs = {"sample:plant"};
+    if (const std::string geo = paramText(exportGraphNode.params, "geo"); !geo.empty())
+        request.geo = parseGeoLocation(geo);
+    const LeanCheck check = checkLeanPlan(request);
+    if (!check.lean) return std::nullopt;
+    if (paramBool(exportGraphNode.params, "dlod")) {
+        std::fprintf(stderr, "hlod build: note: the DLOD statistics row needs the whole scene: "
+                             "importing it for the final step (--no-dlod reads only the plan "
+                             "and the shards' tiles)\n");
+        return std::nullopt;
+    }
+    if (!check.missing.empty()) {
+        PlanCheck missing;
+        missing.shards = check.shards;
+        missing.missing = check.missing;
+        throw Error(ErrorCode::FileNotFound, planFolder(request.cacheDir),
+                    describeMissingShards(missing) + ": run hlod build --shard I/" +
+                        std::to_string(check.shards) + " --cache " + request.cacheDir.string() +
+                        " for them, or wait for their jobs");
+    }
+    returnLargeBlocksAtOnce();
+    ProgressBar bar;
+    const LeanFinalResult r = runLeanFinal(request, bar.progress());
+    bar.finish();
+    const ExportResult& ex = r.export_;
+    const ProcessUsage use = processUsage();
+    if (json) {
+        nlohmann::json j = {{"branch", branchJson(graph, exportNode)},
+                            {"output", ex.output.string()},
+                            {"output_bytes", ex.written.bytes},
+                            {"package",
+                             {{"files", ex.written.files},
+                              {"bytes", ex.written.bytes},
+                              {"bytes_on_disk", ex.written.bytesOnDisk},
+                              {"tiles", ex.written.tiles},
+                              {"written", ex.written.written},
+                              {"unchanged", ex.written.reused}}},
+                            {"source",
+                             {{"files", ex.source.files},
+                              {"bytes", ex.source.bytes},
+                              {"bytes_on_disk", ex.source.bytesOnDisk}}},
+                            {"plan",
+                             {{"id", check.id},
+                              {"shards", check.shards},
+                              {"above_cut", check.aboveCut},
+                              {"baked_here", r.bake.baked},
+                              {"damaged", r.bake.damaged},
+                              {"lean", true}}},
+                            {"proxy_share",
+                             {{"all_proxies", ex.info.share.allProxies},
+                              {"root_proxy", ex.info.share.rootProxy},
+                              {"replaced", ex.info.share.replaced}}},
+                            {"seconds",
+                             {{"final", r.seconds},
+                              {"bake", r.bake.seconds},
+                              {"bake_cpu", r.bake.cpuSeconds},
+                              {"write", ex.writeSeconds}}},
+                            {"peak_bytes", use.peakBytes}};
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    const BakeParams& params = ex.info.bake;
+    std::printf("branch:       %s\n", branchText(graph, exportNode).c_str());
+    std::printf("scene:        ");
+    for (const auto& in : request.inputs)
+        std::printf("%s ", in.c_str());
+    std::printf("(not imported: the plan and the shards' tiles hold what the final step needs)\n");
+    std::printf("clusters:     %s, %zu nodes (%zu inner), height %d, from the plan\n",
+                hlodVersionName(r.tree).c_str(), r.tree.nodes.size(), r.bake.innerNodes,
+                r.tree.height());
+    std::printf("proxies:      %s at %g px / %g px: baked %zu, reused %zu above the cut in %.2f s; "
+                "the shards baked %zu, reused %zu\n",
+                toString(params.method), params.screen.screenSize, params.screen.pixelError,
+                r.bake.baked, r.bake.reused, r.bake.seconds, r.shardBaked, r.shardReused);
+    std::printf("plan:         %s: all %d shards finished; lean final step (%zu nodes above the "
+                "cut) in %.2f s, %.2f CPU s, peak memory %.0f MB\n",
+                check.id.c_str(), check.shards, check.aboveCut, r.seconds, use.cpuSeconds,
+                static_cast<double>(use.peakBytes) / 1e6);
+    std::printf("proxy share:  all proxies %.1f%% of the original triangles, root proxy %.2f%%, "
+                "a proxy %.1f%% of what it replaces\n",
+                ex.info.share.allProxies * 100.0, ex.info.share.rootProxy * 100.0,
+                ex.info.share.replaced * 100.0);
+    printLevels(ex.info.levels, r.bake, params.proxyRatio);
+    printTable(ex.info.statistics);
+    std::printf("output:       %s (%.2f MB)\n", ex.output.string().c_str(),
+                static_cast<double>(ex.written.bytes) / 1.0e6);
+    printDisk(ex);
+    return 0;
+}
+
 void warnDamaged(const NodeOutput& out) {
     if (const std::size_t n = out.bake->damaged; n > 0) {
         std::fprintf(stderr,
@@ -320,6 +446,10 @@ int runBuild(const CommandArgs& argv) {
     const std::vector<NodeId> exports = pickExports(graph, args.value("--export"), output);
     graph.checkRunnable(exports); // a graph that cannot run is refused before any work
 
+    if (exports.size() == 1) {
+        if (const std::optional<int> lean = runLeanFinalStep(graph, exports[0], args.has("--json")))
+            return *lean;
+    }
     ProgressBar bar;
     std::vector<PlanCheck> plans;
     for (NodeId exportNode : exports)

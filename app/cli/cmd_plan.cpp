@@ -70,6 +70,10 @@ void printPlan(const PlanSummary& s, const std::filesystem::path& cache, double 
     std::printf("balance:      largest shard %.2fx the mean; predicted speed-up of the bake on %d "
                 "machines %.2fx (Amdahl: all / (above cut + largest shard))\n",
                 s.shards.largestOverMean(), s.shards.shards, s.shards.predictedSpeedup());
+    std::printf("final step:   %s\n",
+                s.lean ? "lean: the final build reads the plan and the shards' tiles, not the scene"
+                       : "imports the scene again (a textured scene, hand edits, or the root below "
+                         "the cut)");
     std::printf("next:         hlod build --shard I/%d --cache %s   (I = 0..%d, or auto/%d in a "
                 "job array)\n"
                 "              hlod build SCENE... -o PKG --cache %s   (same flags as this plan)\n",
@@ -103,6 +107,7 @@ nlohmann::json planJson(const PlanSummary& s) {
              {{"largest_over_mean", s.shards.largestOverMean()},
               {"predicted_speedup", s.shards.predictedSpeedup()}}},
             {"above_cut_nodes", s.shards.top.size()},
+            {"lean_final", s.lean},
             {"shard_list", shards},
             {"seconds", s.seconds}};
 }
@@ -128,8 +133,11 @@ int runPlan(const CommandArgs& argv) {
     ProgressBar bar;
     graph.run({clusterNode}, bar.progress());
     const NodeOutput& out = *graph.output(clusterNode);
-    const PlanSummary s =
-        writeBakePlan(cache, *out.scene, *out.tree, bakeValues, shards, bar.progress());
+    const GlbCompression compression =
+        glbCompressionFromString(args.value("--compression").value_or("meshopt"));
+    const std::optional<LeanInputs> lean = leanInputsOf(graph, clusterNode, compression);
+    const PlanSummary s = writeBakePlan(cache, *out.scene, *out.tree, bakeValues, shards,
+                                        bar.progress(), lean ? &*lean : nullptr);
     bar.finish();
     if (args.has("--json")) {
         std::cout << planJson(s).dump(2) << "\n";

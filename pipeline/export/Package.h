@@ -27,6 +27,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,7 +38,10 @@
 #include "pipeline/core/Progress.h"
 #include "pipeline/export/Geo.h"
 #include "pipeline/export/PackageLayout.h"
+#include "pipeline/export/Placement.h"
+#include "pipeline/export/TileContent.h"
 #include "pipeline/io/GlbWriter.h"
+#include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/ProxyBaker.h"
 #include "pipeline/scene/Scene.h"
 
@@ -64,6 +68,29 @@ PackageSummary writePackage(const std::filesystem::path& dir, const Scene& scene
                             const ClusterTree& tree, const BakeResult& bake,
                             const BakeParams& bakeParams, const PackageOptions& options,
                             const Progress& progress = {});
+
+// A content encoded elsewhere (a shard of a distributed bake, BakePlan.h): its URI
+// ("tiles/HASH.glb"), what the encoder reported (bytes empty) and the file holding the bytes.
+struct GivenContent {
+    std::string uri;
+    EncodedContent encoded;
+    std::filesystem::path file;
+};
+
+// What a distributed bake's final step writes a package from without the scene's meshes: the
+// layout with its blocks (planPackage with LayoutBlocks), the block contents already encoded,
+// the sizes the manifest reports, and the placement (packagePlacement of the whole scene).
+// The files of given contents are hard-linked (copied across file systems) into the package.
+struct PackageParts {
+    const PackageLayout& layout;
+    std::function<const GivenContent&(const ContentSource&)> given;
+    const SizeTable& sizes;
+    Placement placement;
+};
+PackageSummary writePackage(const std::filesystem::path& dir, const Scene& scene,
+                            const ClusterTree& tree, const BakeResult& bake,
+                            const BakeParams& bakeParams, const PackageOptions& options,
+                            const PackageParts& parts, const Progress& progress = {});
 
 // The package writePackage would write, assembled in memory and measured without writing:
 // files, bytes, and bytes on disk on a file system of `blockSize`-byte blocks (every file

@@ -88,9 +88,11 @@ std::vector<double> monotoneErrors(const ClusterTree& tree, const BakeResult& ba
 
 class Planner {
 public:
-    Planner(const Scene& scene, const ClusterTree& tree, const BakeResult& bake)
-        : scene_(scene), tree_(tree), bake_(bake), err_(monotoneErrors(tree, bake)),
-          triangles_(tree.nodes.size(), 0), meshCentre_(scene.meshes.size(), glm::dvec3(0.0)) {
+    Planner(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+            const LayoutBlocks* blocks = nullptr)
+        : scene_(scene), tree_(tree), bake_(bake), blocks_(blocks),
+          err_(monotoneErrors(tree, bake)), triangles_(tree.nodes.size(), 0),
+          meshCentre_(scene.meshes.size(), glm::dvec3(0.0)) {
         layout_.tileOfNode.assign(tree.nodes.size(), -1);
         for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
             const Aabb b = scene.meshes[m].localBounds();
@@ -105,8 +107,14 @@ public:
             groupTile({tree_.root}, -1, kNoId);
         else
             innerTile(tree_.root, -1);
-        for (auto it = layout_.tiles.rbegin(); it != layout_.tiles.rend(); ++it)
-            finishBox(*it);
+        finishBoxes();
+        return std::move(layout_);
+    }
+
+    // The subtree under inner node n alone (planSubtree).
+    PackageLayout runSubtree(Id n) {
+        innerTile(n, -1);
+        finishBoxes();
         return std::move(layout_);
     }
 
@@ -119,9 +127,18 @@ private:
         return index;
     }
 
+    void finishBoxes() {
+        for (std::size_t i = layout_.tiles.size(); i-- > 0;)
+            if (i >= given_.size() || !given_[i]) finishBox(layout_.tiles[i]);
+    }
+
     std::size_t countTriangles(Id n) {
         const ClusterNode& node = tree_.nodes[n];
-        if (node.isLeaf()) return triangles_[n] = meshOf(n).triangleCount();
+        if (node.isLeaf()) {
+            const Id mesh = scene_.instances[node.instance].mesh;
+            return triangles_[n] =
+                       blocks_ ? blocks_->meshTriangles[mesh] : scene_.meshes[mesh].triangleCount();
+        }
         std::size_t sum = 0;
         for (Id c : node.children)
             sum += countTriangles(c);
@@ -155,13 +172,14 @@ private:
         // placed by the content's node instead.
         const RigidFrame frame =
             hasContent ? b.frame : RigidFrame{tree_.nodes[n].box.center(), glm::dmat3(1.0)};
-        if (parent >= 0) t.frame = frame.matrix();
+        const bool root = n == tree_.root;
+        if (!root) t.frame = frame.matrix();
         if (hasContent) {
             ContentPlan c;
             c.proxy = true;
             c.node = n;
-            c.proxyOffset = parent >= 0 ? glm::dvec3(0.0) : frame.origin;
-            c.proxyRotation = parent >= 0 ? glm::dmat3(1.0) : frame.rotation;
+            c.proxyOffset = !root ? glm::dvec3(0.0) : frame.origin;
+            c.proxyRotation = !root ? glm::dmat3(1.0) : frame.rotation;
             c.positionStep = quantizedBudget(b.errorBudget) / kStepsPerBudget;
             Aabb box, world;
             for (const glm::vec3& p : b.proxy.positions) {
@@ -184,6 +202,8 @@ private:
                 const std::size_t first = leaves.size();
                 leavesBelow(c, leaves);
                 folds.emplace_back(c, leaves[first]);
+            } else if (const PackageLayout* block = blockOf(c)) {
+                spliceBlock(c, *block, self);
             } else {
                 innerTile(c, self);
             }
@@ -210,7 +230,38 @@ private:
 
     int addContent(ContentPlan c) {
         layout_.contents.push_back(std::move(c));
+        layout_.sources.push_back({});
         return static_cast<int>(layout_.contents.size()) - 1;
+    }
+
+    const PackageLayout* blockOf(Id n) const {
+        if (!blocks_) return nullptr;
+        const auto it = blocks_->byRoot.find(n);
+        return it == blocks_->byRoot.end() ? nullptr : it->second;
+    }
+
+    // A subtree laid out elsewhere (LayoutBlocks): its tiles and contents as they are, after
+    // what is laid out so far, its root tile under `parent`; its boxes are finished.
+    void spliceBlock(Id root, const PackageLayout& block, int parent) {
+        const int t0 = static_cast<int>(layout_.tiles.size());
+        const int c0 = static_cast<int>(layout_.contents.size());
+        for (std::size_t i = 0; i < block.contents.size(); ++i) {
+            layout_.contents.push_back(block.contents[i]);
+            layout_.sources.push_back({root, static_cast<int>(i)});
+        }
+        given_.resize(layout_.tiles.size(), 0);
+        for (std::size_t i = 0; i < block.tiles.size(); ++i) {
+            TilePlan t = block.tiles[i];
+            t.parent = i == 0 ? parent : t.parent + t0;
+            if (t.content >= 0) t.content += c0;
+            for (int& c : t.children)
+                c += t0;
+            layout_.tiles.push_back(std::move(t));
+            given_.push_back(1);
+        }
+        layout_.tiles[static_cast<std::size_t>(parent)].children.push_back(t0);
+        for (std::size_t n = 0; n < block.tileOfNode.size(); ++n)
+            if (block.tileOfNode[n] >= 0) layout_.tileOfNode[n] = block.tileOfNode[n] + t0;
     }
 
     const Mesh& meshOf(Id leaf) const {
@@ -455,6 +506,8 @@ private:
     const Scene& scene_;
     const ClusterTree& tree_;
     const BakeResult& bake_;
+    const LayoutBlocks* blocks_ = nullptr;
+    std::vector<char> given_; // per tile: taken finished from a block
     std::vector<double> err_;
     std::vector<std::size_t> triangles_; // original triangles below each node
     std::vector<glm::dvec3> meshCentre_; // per scene mesh: the centre of its local box
@@ -466,6 +519,16 @@ private:
 
 PackageLayout planPackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake) {
     return Planner(scene, tree, bake).run();
+}
+
+PackageLayout planSubtree(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                          Id node) {
+    return Planner(scene, tree, bake).runSubtree(node);
+}
+
+PackageLayout planPackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                          const LayoutBlocks& blocks) {
+    return Planner(scene, tree, bake, &blocks).run();
 }
 
 } // namespace hlod

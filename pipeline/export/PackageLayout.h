@@ -55,6 +55,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -111,12 +112,38 @@ struct TilePlan {
     Aabb worldBox; // everything below the tile (content and children), package frame
 };
 
+// Where a content of the layout comes from: laid out here (block kNoId), or content `index` of
+// the block of subtree root `block` (LayoutBlocks).
+struct ContentSource {
+    Id block = kNoId;
+    int index = -1;
+};
+
 struct PackageLayout {
     std::vector<ContentPlan> contents;
-    std::vector<TilePlan> tiles; // tiles[0] is the root; parents before children
-    std::vector<int> tileOfNode; // per tree node: the tile showing it (leaves: their group)
+    std::vector<ContentSource> sources; // parallel to contents
+    std::vector<TilePlan> tiles;        // tiles[0] is the root; parents before children
+    std::vector<int> tileOfNode;        // per tree node: the tile showing it (leaves: their group)
 };
 
 PackageLayout planPackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake);
+
+// The layout of the subtree under inner node `node` (not the root) exactly as planPackage lays
+// it out below its parent: tiles[0] is the node's (parent -1), boxes finished; tileOfNode is
+// filled for the subtree's nodes only. What a shard of a distributed bake lays out and encodes
+// (BakePlan.h); `scene` needs only the subtree's meshes.
+PackageLayout planSubtree(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                          Id node);
+
+// Subtrees laid out elsewhere (planSubtree, ids renumbered into `tree`'s), by root: planPackage
+// takes their tiles and contents as they are instead of laying them out, so it reads no mesh
+// below them. meshTriangles: per scene mesh its triangles (the scene's meshes below the blocks
+// may be empty).
+struct LayoutBlocks {
+    std::map<Id, const PackageLayout*> byRoot;
+    std::vector<std::size_t> meshTriangles;
+};
+PackageLayout planPackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                          const LayoutBlocks& blocks);
 
 } // namespace hlod

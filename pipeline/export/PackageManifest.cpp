@@ -41,13 +41,14 @@ nlohmann::json tilesJson(const ManifestInput& in, const std::vector<int>& fileOf
     return tiles;
 }
 
-nlohmann::json meshesJson(const Scene& scene) {
+nlohmann::json meshesJson(const Scene& scene, const SizeTable* sizes) {
     nlohmann::json meshes = nlohmann::json::array();
-    for (const Mesh& m : scene.meshes) {
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& m = scene.meshes[i];
         meshes.push_back({{"name", m.name},
                           {"material", scene.materials[m.material].name},
-                          {"triangles", m.triangleCount()},
-                          {"vertices", m.vertexCount()}});
+                          {"triangles", sizes ? sizes->meshes[i].triangles : m.triangleCount()},
+                          {"vertices", sizes ? sizes->meshes[i].vertices : m.vertexCount()}});
     }
     return meshes;
 }
@@ -57,8 +58,10 @@ nlohmann::json innerNode(const ManifestInput& in, Id i) {
     const NodeBake& b = in.bake.nodes[i];
     // A node inside a subtree too small to matter has no tile (nor proxy) of its own.
     const int tile = in.layout.tileOfNode[i];
-    const bool shown =
-        b.hasProxy && !b.proxy.empty() && in.layout.tiles[static_cast<std::size_t>(tile)].node == i;
+    const MeshSize size = in.sizes ? in.sizes->proxies[i]
+                                   : MeshSize{b.proxy.triangleCount(), b.proxy.vertexCount(), 0};
+    const bool shown = b.hasProxy && size.triangles > 0 &&
+                       in.layout.tiles[static_cast<std::size_t>(tile)].node == i;
     return {
         {"parent", n.parent == kNoId ? nlohmann::json() : nlohmann::json(n.parent)},
         {"children", n.children},
@@ -68,8 +71,8 @@ nlohmann::json innerNode(const ManifestInput& in, Id i) {
         {"diameter", shortNumber(b.diameter)},
         {"errorBudget", shortNumber(b.errorBudget)},
         {"switchDistance", shortNumber(b.switchDistance)},
-        {"triangles", shown ? b.proxy.triangleCount() : 0},
-        {"vertices", shown ? b.proxy.vertexCount() : 0},
+        {"triangles", shown ? size.triangles : 0},
+        {"vertices", shown ? size.vertices : 0},
         {"tile", in.layout.tileOfNode[i]}};
 }
 
@@ -132,7 +135,7 @@ nlohmann::json buildManifest(const ManifestInput& in) {
             {"root", in.tree.root},
             {"files", files},
             {"tiles", tilesJson(in, fileOfContent)},
-            {"meshes", meshesJson(in.scene)},
+            {"meshes", meshesJson(in.scene, in.sizes)},
             {"nodes", std::move(nodes)}};
 }
 

@@ -25,6 +25,7 @@
 
 #include "pipeline/export/Package.h"
 #include "pipeline/export/TileContent.h"
+#include "pipeline/proxy/BakeStats.h"
 
 namespace hlod {
 
@@ -37,6 +38,9 @@ struct ManifestInput {
     const PackageLayout& layout;
     const std::vector<std::string>& contentUris; // per layout content
     const std::vector<EncodedContent>& encoded;  // per layout content (bytes not needed)
+    // When set, mesh and proxy sizes come from here instead of the geometry (a distributed
+    // bake's final step holds the sizes, not the meshes: BakePlan.h).
+    const SizeTable* sizes = nullptr;
 };
 
 nlohmann::json buildManifest(const ManifestInput& in);

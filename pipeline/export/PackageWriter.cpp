@@ -28,6 +28,8 @@ class Sink {
 public:
     virtual ~Sink() = default;
     virtual void add(const std::string& rel, std::span<const std::uint8_t> bytes) = 0;
+    // A file whose bytes are in `file` (a content encoded elsewhere).
+    virtual void addFile(const std::string& rel, const fs::path& file) = 0;
     void addText(const std::string& rel, const std::string& text) {
         add(rel, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
     }
@@ -41,6 +43,13 @@ public:
         ++s_.files;
         s_.bytes += bytes.size();
         s_.bytesOnDisk += blocksFor(bytes.size(), blockSize_);
+    }
+    void addFile(const std::string&, const fs::path& file) override {
+        std::error_code ec;
+        const std::uintmax_t size = fs::file_size(file, ec);
+        ++s_.files;
+        s_.bytes += size;
+        s_.bytesOnDisk += blocksFor(size, blockSize_);
     }
 
 private:
@@ -82,19 +91,44 @@ public:
                        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         ++s_.written;
     }
+    // Content-addressed names: a file of the old package with the same name and size holds the
+    // same bytes. Otherwise a hard link to `file`, or a copy where links cannot be made.
+    void addFile(const std::string& rel, const fs::path& file) override {
+        const fs::path target = tmp_ / rel;
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) throw Error(ErrorCode::Io, target.parent_path(), "cannot create: " + ec.message());
+        const std::uintmax_t size = fs::file_size(file, ec);
+        if (ec) throw Error(ErrorCode::FileNotFound, file, "cannot be read: " + ec.message());
+        if (!old_.empty() && fs::is_regular_file(old_ / rel, ec) &&
+            fs::file_size(old_ / rel, ec) == size && !ec) {
+            fs::create_hard_link(old_ / rel, target, ec);
+            if (!ec) {
+                ++s_.reused;
+                return;
+            }
+        }
+        ec.clear();
+        fs::create_hard_link(file, target, ec);
+        if (ec) {
+            ec.clear();
+            fs::copy_file(file, target, ec);
+            if (ec) throw Error(ErrorCode::Io, target, "cannot write: " + ec.message());
+        }
+        ++s_.written;
+    }
 
 private:
     fs::path tmp_, old_;
     PackageSummary& s_;
 };
 
-// Every file of the package into `sink`; returns the number of tiles.
-std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
-                     const BakeParams& bakeParams, const PackageOptions& options, Sink& sink,
-                     const Progress& progress) {
-    if (tree.root == kNoId || bake.nodes.size() != tree.nodes.size())
-        throw Error(ErrorCode::InvalidArgument, "package: the proxies do not match the tree");
-    const PackageLayout layout = planPackage(scene, tree, bake);
+// Every file of the package laid out as `layout` into `sink`; contents from blocks come from
+// `parts` (null: none). Returns the number of tiles.
+std::size_t assembleLayout(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                           const BakeParams& bakeParams, const PackageOptions& options,
+                           const PackageLayout& layout, const Placement& placement,
+                           const PackageParts* parts, Sink& sink, const Progress& progress) {
     TextureStore textures(scene);
     ContentEncoder encoder(scene, bake, textures, options.compression);
     std::vector<std::string> uris;
@@ -103,6 +137,14 @@ std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResu
     std::map<std::uint64_t, std::size_t> byKey; // content key -> first content encoded with it
     for (std::size_t i = 0; i < layout.contents.size(); ++i) {
         progress.throwIfCancelled();
+        if (parts && i < layout.sources.size() && layout.sources[i].block != kNoId) {
+            const GivenContent& g = parts->given(layout.sources[i]);
+            uris.push_back(g.uri);
+            if (added.insert(g.uri).second) sink.addFile(g.uri, g.file);
+            encoded.push_back(g.encoded);
+            progress.emit({"export", i + 1, layout.contents.size(), ""});
+            continue;
+        }
         const std::uint64_t key = contentKey(layout.contents[i], bake, scene);
         if (auto it = byKey.find(key); it != byKey.end()) { // a copy: the same file
             uris.push_back(uris[it->second]);
@@ -119,18 +161,29 @@ std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResu
     }
     for (const auto& [uri, bytes] : textures.files())
         sink.add("tiles/" + uri, bytes);
-    // Where the scene is and how to frame it, for runtimes (Placement.h).
-    const Placement placement = packagePlacement(scene);
     nlohmann::json tileset = buildTileset(layout, uris, options.geo);
     tileset["extras"] = {
         {"hlod", placementTilesetJson(placement, options.geo, bakeParams.screen.pixelError)}};
     sink.addText("tileset.json", tileset.dump());
-    const ManifestInput manifest{scene, tree, bake, bakeParams, options, layout, uris, encoded};
+    const ManifestInput manifest{scene,      tree,    bake,
+                                 bakeParams, options, layout,
+                                 uris,       encoded, parts ? &parts->sizes : nullptr};
     nlohmann::json hlodJson = buildManifest(manifest);
     hlodJson["placement"] = placementManifestJson(placement, options.geo);
     sink.addText("hlod.json", hlodJson.dump());
     progress.throwIfCancelled();
     return layout.tiles.size();
+}
+
+// The whole package of a tree and its proxies.
+std::size_t assemble(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                     const BakeParams& bakeParams, const PackageOptions& options, Sink& sink,
+                     const Progress& progress) {
+    if (tree.root == kNoId || bake.nodes.size() != tree.nodes.size())
+        throw Error(ErrorCode::InvalidArgument, "package: the proxies do not match the tree");
+    // Where the scene is and how to frame it, for runtimes (Placement.h).
+    return assembleLayout(scene, tree, bake, bakeParams, options, planPackage(scene, tree, bake),
+                          packagePlacement(scene), nullptr, sink, progress);
 }
 
 fs::path siblingTemp(const fs::path& dir, const char* tag) {
@@ -158,11 +211,8 @@ void commitFolder(const fs::path& tmp, const fs::path& dir) {
     if (!old.empty()) fs::remove_all(old, ec);
 }
 
-} // namespace
-
-PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const ClusterTree& tree,
-                            const BakeResult& bake, const BakeParams& bakeParams,
-                            const PackageOptions& options, const Progress& progress) {
+// The package folder `dirIn` written by `fill` into a temporary sibling renamed into place.
+PackageSummary writeFolder(const fs::path& dirIn, const std::function<std::size_t(Sink&)>& fill) {
     const fs::path dir = fs::absolute(dirIn).lexically_normal();
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
@@ -181,7 +231,7 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
                         "cannot create the package's temporary folder: " + ec.message());
         }
         FolderSink sink(tmp, isPackageFolder(dir) ? dir : fs::path(), summary);
-        summary.tiles = assemble(scene, tree, bake, bakeParams, options, sink, progress);
+        summary.tiles = fill(sink);
         commitFolder(tmp, dir);
     } catch (const Error& e) {
         fs::remove_all(tmp, ec);
@@ -204,6 +254,28 @@ PackageSummary writePackage(const fs::path& dirIn, const Scene& scene, const Clu
     summary.bytes = disk.bytes;
     summary.bytesOnDisk = disk.bytesOnDisk;
     return summary;
+}
+
+} // namespace
+
+PackageSummary writePackage(const fs::path& dir, const Scene& scene, const ClusterTree& tree,
+                            const BakeResult& bake, const BakeParams& bakeParams,
+                            const PackageOptions& options, const Progress& progress) {
+    return writeFolder(dir, [&](Sink& sink) {
+        return assemble(scene, tree, bake, bakeParams, options, sink, progress);
+    });
+}
+
+PackageSummary writePackage(const fs::path& dir, const Scene& scene, const ClusterTree& tree,
+                            const BakeResult& bake, const BakeParams& bakeParams,
+                            const PackageOptions& options, const PackageParts& parts,
+                            const Progress& progress) {
+    if (tree.root == kNoId || bake.nodes.size() != tree.nodes.size())
+        throw Error(ErrorCode::InvalidArgument, "package: the proxies do not match the tree");
+    return writeFolder(dir, [&](Sink& sink) {
+        return assembleLayout(scene, tree, bake, bakeParams, options, parts.layout, parts.placement,
+                              &parts, sink, progress);
+    });
 }
 
 PackageSummary measurePackage(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,

@@ -15,6 +15,7 @@
 #include "pipeline/cluster/ClusterTreeBinary.h"
 #include "pipeline/core/AtomicFile.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/graph/PlanFiles.h"
 #include "pipeline/proxy/BakeCosts.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/scene/SceneBinary.h"
@@ -23,13 +24,7 @@ namespace hlod {
 
 namespace {
 
-constexpr int kFormat = 2; // 2: keys.bin, measured costs (issue 30)
-constexpr const char* kPlanFile = "plan.json";
-constexpr const char* kTreeFile = "tree.bin";
-constexpr const char* kKeysFile = "keys.bin";
-
-std::string sliceName(int index) { return "shard-" + std::to_string(index) + ".scene"; }
-std::string markerName(int index) { return "shard-" + std::to_string(index) + ".done"; }
+using namespace plan;
 
 double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -47,9 +42,10 @@ std::string readWhole(const std::filesystem::path& file, const char* hint) {
     return bytes;
 }
 
-constexpr const char* kRunPlan = " (run hlod plan SCENE --shards N --cache DIR first)";
+} // namespace
 
-// Bytes followed by their checksum, so a damaged or half-copied file is never used.
+namespace plan {
+
 void writeChecked(const std::filesystem::path& file, std::string bytes) {
     const std::uint64_t sum = hashBytes(bytes.data(), bytes.size());
     bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
@@ -71,6 +67,10 @@ std::string readChecked(const std::filesystem::path& file) {
     return bytes;
 }
 
+} // namespace plan
+
+namespace {
+
 nlohmann::json readJson(const std::filesystem::path& file, const char* hint) {
     const std::string text = readWhole(file, hint);
     nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
@@ -80,8 +80,10 @@ nlohmann::json readJson(const std::filesystem::path& file, const char* hint) {
     return j;
 }
 
+} // namespace
+
 // plan.json, checked for what the readers rely on.
-nlohmann::json readPlanJson(const std::filesystem::path& cacheDir) {
+nlohmann::json plan::readPlanJson(const std::filesystem::path& cacheDir) {
     const std::filesystem::path file = planFolder(cacheDir) / kPlanFile;
     nlohmann::json j = readJson(file, kRunPlan);
     try {
@@ -100,6 +102,8 @@ nlohmann::json readPlanJson(const std::filesystem::path& cacheDir) {
     }
     return j;
 }
+
+namespace {
 
 void hashScene(ContentHash& h, const Scene& scene) {
     h.addValue(static_cast<std::uint64_t>(scene.nodes.size()));
@@ -230,7 +234,7 @@ std::uint64_t bakePlanId(const Scene& scene, const ClusterTree& tree, const Bake
 
 PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& scene,
                           const ClusterTree& tree, const ParamValues& bakeValues, int shards,
-                          const Progress& progress) {
+                          const Progress& progress, const LeanInputs* lean) {
     const auto start = std::chrono::steady_clock::now();
     if (cacheDir.empty()) {
         throw Error(ErrorCode::InvalidArgument,
@@ -274,8 +278,12 @@ PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& sc
                                        static_cast<std::uint64_t>(shards) + 1,
                                        "wrote " + sliceName(i)});
         }
+        const nlohmann::json leanJson =
+            lean ? writeLeanPlan(fresh, scene, tree, s.shards, *lean) : nlohmann::json();
+        s.lean = !leanJson.is_null();
         const nlohmann::json j = {
             {"format", kFormat},
+            {"lean", leanJson},
             {"id", s.id},
             {"shards", shards},
             {"bake", paramsToJson(NodeKind::Bake, bakeValues)},
@@ -344,17 +352,20 @@ ShardResult runBakeShard(const std::filesystem::path& cacheDir, int index, int s
             throw Error(ErrorCode::Malformed, sliceFile, "does not match the plan's tree");
     }
 
-    const BakeResult bake = bakeSubtrees(slice, tree, roots, params, progress);
+    BakeResult bake = bakeSubtrees(slice, tree, roots, params, progress);
     recordCosts(cacheDir, plan.at("id").get<std::string>() + "-" + std::to_string(index),
                 readKeys(folder / kKeysFile, tree), bake);
+    const std::size_t innerNodes = bake.innerNodes, baked = bake.baked, reused = bake.reused,
+                      damaged = bake.damaged;
+    writeShardTiles(cacheDir, plan, index, slice, tree, roots, std::move(bake));
     ShardResult r;
     r.index = index;
     r.shards = shards;
     r.subtrees = roots.size();
-    r.innerNodes = bake.innerNodes;
-    r.baked = bake.baked;
-    r.reused = bake.reused;
-    r.corrupt = bake.damaged;
+    r.innerNodes = innerNodes;
+    r.baked = baked;
+    r.reused = reused;
+    r.corrupt = damaged;
     for (const Mesh& m : slice.meshes) {
         r.meshes += m.indices.empty() ? 0 : 1;
         r.triangles += m.triangleCount();

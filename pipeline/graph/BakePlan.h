@@ -15,16 +15,20 @@
 //                  read (sliceScene, SceneBinary.h), so a shard's memory is about its share
 //   shard-I.done   written by shard I once all its proxies are in the cache: {"plan", "shard",
 //                  "shards", "inner_nodes", "baked", "reused", "seconds"}
-// Format 2 (issue 30) added keys.bin; a plan of another format is refused with "run hlod plan
-// again". tree.bin, keys.bin and the slices end in a 64-bit checksum of the bytes before it. The
-// plan is written into a temporary folder that then replaces CACHE/plan, so readers see a whole
-// plan or the previous one; a new plan has no shard-I.done files. The id is a hash of the scene's
-// content, the tree and the bake parameters (bakeParamsKey): the final build finds the plan it
-// belongs to by recomputing it. Paths inside are relative to the plan folder, so the cache folder
-// may be mounted at another path on every machine. Failure: Error naming the file: FileNotFound for
-// a missing plan or slice ("run hlod plan"), Malformed for a damaged or foreign file (bad checksum,
-// bad JSON, wrong format), Io when the folder cannot be written, InvalidArgument for a shard index
-// outside the plan.
+//   top.scene, sizes.bin, shard-I.tiles, and plan.json "lean": the lean final step (issue 30,
+//                  LeanFinal.h): the shards also write their subtrees' finished tiles, and a
+//                  final build made from the plan's very inputs (files by content, parameters)
+//                  reads the plan and those tiles instead of importing the scene.
+// Format 2 (issue 30) added keys.bin, format 3 the lean final step; a plan of another format is
+// refused with "run hlod plan again". tree.bin, keys.bin and the slices end in a 64-bit checksum of
+// the bytes before it. The plan is written into a temporary folder that then replaces CACHE/plan,
+// so readers see a whole plan or the previous one; a new plan has no shard-I.done files. The id is
+// a hash of the scene's content, the tree and the bake parameters (bakeParamsKey): the final build
+// finds the plan it belongs to by recomputing it. Paths inside are relative to the plan folder, so
+// the cache folder may be mounted at another path on every machine. Failure: Error naming the file:
+// FileNotFound for a missing plan or slice ("run hlod plan"), Malformed for a damaged or foreign
+// file (bad checksum, bad JSON, wrong format), Io when the folder cannot be written,
+// InvalidArgument for a shard index outside the plan.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +38,7 @@
 #include <vector>
 
 #include "pipeline/core/Progress.h"
+#include "pipeline/graph/LeanFinal.h"
 #include "pipeline/graph/Parameters.h"
 #include "pipeline/proxy/ShardPlan.h"
 
@@ -54,13 +59,16 @@ struct PlanSummary {
     std::vector<std::size_t> shardInnerNodes, shardMeshes, shardTriangles; // per shard
     std::vector<std::uint64_t> shardBytes;                                 // slice file sizes
     double seconds = 0.0;
+    bool lean = false; // the final step can run lean (LeanFinal.h)
 };
 
 // Cuts `tree` into `shards` (planShards) and writes the plan for `bakeValues` (the Bake node's
 // parameters; its cache folder and threads are not used) under cacheDir.
+// `lean` (LeanFinal.h): what the final build recognises the plan by without importing; given,
+// the plan also holds what the lean final step needs (when it can serve the scene).
 PlanSummary writeBakePlan(const std::filesystem::path& cacheDir, const Scene& scene,
                           const ClusterTree& tree, const ParamValues& bakeValues, int shards,
-                          const Progress& progress = {});
+                          const Progress& progress = {}, const LeanInputs* lean = nullptr);
 
 struct ShardResult {
     int index = 0, shards = 0;

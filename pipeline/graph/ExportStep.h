@@ -16,6 +16,7 @@
 #include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
 #include "pipeline/graph/HandEdits.h"
+#include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/BuildOutput.h"
 
 namespace hlod {
@@ -45,6 +46,9 @@ struct BuildInputs {
     const HandEdits& edits;
     const BakeParams& bakeParams;
     const std::vector<std::string>& inputs; // source scene paths as given
+    // When set, the statistics take mesh and proxy sizes from here (the scene's meshes and the
+    // proxies may be absent: a distributed bake's final step, BakePlan.h).
+    const SizeTable* sizes = nullptr;
 };
 
 // The statistics and parameters of a build (without writing anything).
@@ -52,5 +56,10 @@ BuildInfo makeBuildInfo(const BuildInputs& in, bool dlod, double* dlodSeconds = 
 
 ExportResult exportPackage(const BuildInputs& in, const ExportOptions& options,
                            const Progress& progress = {});
+
+// The package options of a build: its inputs, geo and compression, and the statistics summary
+// hlod.json carries (what this run did, baked or found in the cache, left out).
+PackageOptions packageOptionsFor(const BuildInputs& in, const BuildInfo& info,
+                                 const ExportOptions& options);
 
 } // namespace hlod

@@ -44,11 +44,34 @@ std::size_t meshBytes(std::size_t vertices, std::size_t indices, bool uvs, bool 
 std::size_t meshBytes(const Mesh& mesh);
 std::size_t meshBytes(const ProxyMesh& mesh);
 
+// Triangles, vertices and geometry bytes (meshBytes) of one mesh or proxy.
+struct MeshSize {
+    std::size_t triangles = 0;
+    std::size_t vertices = 0;
+    std::size_t bytes = 0;
+};
+
+// What the statistics read of the geometry, without the geometry: per scene mesh, and per tree
+// node its proxy (zero for leaves and nodes without one). A distributed bake's final step
+// (BakePlan.h) has the sizes, not the meshes.
+struct SizeTable {
+    std::vector<MeshSize> meshes;  // parallel to Scene::meshes
+    std::vector<MeshSize> proxies; // parallel to BakeResult::nodes
+};
+std::vector<MeshSize> meshSizes(const Scene& scene);
+SizeTable sizeTable(const Scene& scene, const BakeResult& bake);
+
 GeometryStats originalStats(const Scene& scene);
 GeometryStats dlodStats(const DlodSummary& summary);
 GeometryStats hlodStats(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
                         const std::string& version);
 ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeResult& bake);
+// The same from sizes (the scene's instances and the bake's totals are read, not its meshes).
+GeometryStats originalStats(const Scene& scene, const SizeTable& sizes);
+GeometryStats hlodStats(const Scene& scene, const ClusterTree& tree, const SizeTable& sizes,
+                        const std::string& version);
+ProxyShare proxyShare(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
+                      const SizeTable& sizes);
 
 // One row of the per-level table of a built HLOD (levels as ClusterNode::level: leaves 0, a
 // parent one above its highest child). Level 0 holds the leaves: the original meshes, whose
@@ -65,6 +88,8 @@ struct LevelRow {
 
 std::vector<LevelRow> levelTable(const Scene& scene, const ClusterTree& tree,
                                  const BakeResult& bake);
+std::vector<LevelRow> levelTable(const Scene& scene, const ClusterTree& tree,
+                                 const BakeResult& bake, const SizeTable& sizes);
 
 // "HLOD, sphere", "HLOD, AABB k=1", ... as in the thesis' tables.
 std::string hlodVersionName(const ClusterTree& tree);

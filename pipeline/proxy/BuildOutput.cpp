@@ -123,7 +123,7 @@ std::uintmax_t writeContents(const std::filesystem::path& dir, const ClusterTree
 } // namespace
 
 nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
-                             const BuildInfo& info) {
+                             const BuildInfo& info, bool withNodes) {
     nlohmann::json doc;
     doc["format"] = kFormat;
     doc["format_version"] = 1;
@@ -139,9 +139,9 @@ nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const 
                          {"proxy_ratio", info.bake.proxyRatio}};
     doc["root"] = tree.root == kNoId ? nlohmann::json() : nlohmann::json(tree.root);
     nlohmann::json nodes = nlohmann::json::array();
-    for (Id id = 0; id < tree.nodes.size(); ++id)
+    for (Id id = 0; withNodes && id < tree.nodes.size(); ++id)
         nodes.push_back(nodeJson(scene, tree, bake, info, id));
-    doc["nodes"] = std::move(nodes);
+    if (withNodes) doc["nodes"] = std::move(nodes);
     nlohmann::json stats = nlohmann::json::array();
     for (const GeometryStats& s : info.statistics)
         stats.push_back(statsJson(s));

@@ -30,13 +30,13 @@ struct BuildInfo {
     BakeParams bake;
     std::vector<GeometryStats> statistics; // rows of the thesis-style table
     ProxyShare share;
-    std::vector<LevelRow> levels; // per-level table (BakeStats.h levelTable)
+    std::vector<LevelRow> levels;     // per-level table (BakeStats.h levelTable)
     nlohmann::json clusterParameters; // as the caller names them (volume, k, ...)
 };
 
 // The tree.json document (exposed for tests and the GUI).
 nlohmann::json buildTreeJson(const Scene& scene, const ClusterTree& tree, const BakeResult& bake,
-                             const BuildInfo& info);
+                             const BuildInfo& info, bool withNodes = true);
 
 // Writes DIR atomically (see above); returns the total bytes written.
 std::uintmax_t writeBuildFolder(const std::filesystem::path& dir, const Scene& scene,

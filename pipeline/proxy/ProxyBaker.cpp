@@ -44,8 +44,10 @@ double threadCpuSeconds() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree).
-std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots) {
+// Children before parents, only nodes in the subtrees of `roots` (the root's: the whole tree),
+// without the `skip` ones and what lies below them.
+std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots,
+                          const std::vector<char>* skip = nullptr) {
     std::vector<Id> order;
     std::vector<std::pair<Id, bool>> stack;
     for (auto it = roots.rbegin(); it != roots.rend(); ++it)
@@ -60,7 +62,7 @@ std::vector<Id> postOrder(const ClusterTree& tree, const std::vector<Id>& roots)
         stack.push_back({id, true});
         const auto& children = tree.nodes[id].children;
         for (auto it = children.rbegin(); it != children.rend(); ++it)
-            stack.push_back({*it, false});
+            if (!skip || !(*skip)[*it]) stack.push_back({*it, false});
     }
     return order;
 }
@@ -471,6 +473,16 @@ struct BakeRun {
             if (!nb.reused) nb.cpuSeconds = threadCpuSeconds() - cpuStart;
             applyProxyLook(nb.proxy, looks[id]); // not cached: derived from the originals
             if (owner) owner->set_value(nb.proxy);
+            // A proxy that did not pay is not drawn nor baked from (its parent reads its
+            // inputs): stored above, it need not stay in memory, nor this run's copy of it
+            // when the disk cache holds it (a rigid copy of this node reads it from there).
+            if (nb.dissolved || !nb.hasProxy) {
+                nb.proxy = ProxyMesh{origin, {}, {}, {}, {}};
+                if (owner && cache.enabled()) {
+                    const std::lock_guard lock(bakedMutex);
+                    bakedByKey.erase(nb.key);
+                }
+            }
         } catch (...) {
             if (owner) owner->set_exception(std::current_exception());
             throw;
@@ -506,8 +518,10 @@ void validateParams(const BakeParams& params) {
 
 namespace {
 
+// `below` (bakeAbove): the given nodes are left out of the bake and `nodes` holds them.
 BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots,
-                    const BakeParams& params, const Progress& progress) {
+                    const BakeParams& params, const Progress& progress,
+                    const BakeBelow* below = nullptr, std::vector<NodeBake> nodes = {}) {
     validateParams(params);
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock(); // process CPU time, every thread
@@ -515,8 +529,9 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
     tbb::task_arena arena(threads);
 
     BakeResult result;
+    result.nodes = std::move(nodes);
     result.nodes.resize(tree.nodes.size());
-    const std::vector<Id> order = postOrder(tree, roots);
+    const std::vector<Id> order = postOrder(tree, roots, below ? &below->given : nullptr);
     fillFrames(scene, tree, params, order, result.nodes);
     arena.execute([&] { leafKeys(scene, tree, order, params, result.nodes); });
     for (Id id : order) {
@@ -525,7 +540,9 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
 
     BakeRun run{scene, tree, params, progress, ProxyCache(params.cacheDir), result, {}, {}};
     run.pending = std::make_unique<std::atomic<int>[]>(tree.nodes.size());
-    run.looks = subtreeLookSums(scene, tree, order);
+    run.looks =
+        subtreeLookSums(scene, tree, order, below ? below->looks : std::vector<ProxyLookSums>{});
+    if (below) run.standIns = below->standIns;
     run.standIns.resize(tree.nodes.size());
     std::vector<Id> ready;
     for (Id id : order) {
@@ -533,7 +550,7 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
         if (node.isLeaf()) continue;
         int inner = 0;
         for (Id c : node.children)
-            inner += tree.nodes[c].isLeaf() ? 0 : 1;
+            inner += tree.nodes[c].isLeaf() || (below && below->given[c]) ? 0 : 1;
         run.pending[id].store(inner);
         if (inner == 0) ready.push_back(id);
     }
@@ -597,6 +614,23 @@ BakeResult bakeSubtrees(const Scene& scene, const ClusterTree& tree, const std::
         }
     }
     return bakeFrom(scene, tree, roots, params, progress);
+}
+
+BakeResult bakeAbove(const Scene& scene, const ClusterTree& tree, std::vector<NodeBake> nodes,
+                     const BakeBelow& below, const BakeParams& params, const Progress& progress) {
+    if (nodes.size() != tree.nodes.size() || below.given.size() != tree.nodes.size() ||
+        tree.root == kNoId || below.given[tree.root]) {
+        throw Error(ErrorCode::InvalidArgument, "bake above the cut: the given nodes do not match "
+                                                "the tree");
+    }
+    // A proxy's look is not cached (ProxyLook.h): the given inputs get theirs as bakeNode gave
+    // it to them.
+    for (Id id = 0; id < nodes.size(); ++id) {
+        if (below.given[id] && !tree.nodes[id].isLeaf() && !nodes[id].proxy.empty() &&
+            id < below.looks.size())
+            applyProxyLook(nodes[id].proxy, below.looks[id]);
+    }
+    return bakeFrom(scene, tree, {tree.root}, params, progress, &below, std::move(nodes));
 }
 
 std::vector<std::uint64_t> structuralKeys(const Scene& scene, const ClusterTree& tree,

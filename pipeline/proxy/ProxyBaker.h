@@ -51,6 +51,7 @@
 #include "pipeline/proxy/BakeFrame.h"
 #include "pipeline/proxy/DecimateProxy.h"
 #include "pipeline/proxy/ErrorBudget.h"
+#include "pipeline/proxy/ProxyLook.h"
 #include "pipeline/proxy/ProxyMesh.h"
 #include "pipeline/proxy/RemeshProxy.h"
 #include "pipeline/proxy/atlas/BakeAtlas.h"
@@ -120,6 +121,26 @@ BakeResult bakeProxies(const Scene& scene, const ClusterTree& tree, const BakePa
 // duplicate or below another root.
 BakeResult bakeSubtrees(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots,
                         const BakeParams& params, const Progress& progress = {});
+
+// The nodes below the cut of a distributed bake as its shards decided them (BakePlan.h).
+struct BakeBelow {
+    // Per tree node: decided by a shard; its NodeBake (passed to bakeAbove) holds its key,
+    // frame, budget and decision, and a kept one that is an input of a node above, its proxy.
+    std::vector<char> given;
+    std::vector<std::vector<Id>> standIns; // per node: a given dissolved node's inputs
+    // Per node: the sums over its originals (ProxyLook.h), for the given subtree roots and the
+    // given kept nodes that are inputs of a node above.
+    std::vector<ProxyLookSums> looks;
+};
+
+// The final step of a distributed bake: bakes the inner nodes that are not given (the nodes
+// above the cut: no given node may have one below it) from `nodes`, whose given entries stand
+// for everything below the cut, so no mesh below the cut is read. Each node baked gets the key,
+// proxy and decision bakeProxies gives it. result.nodes: `nodes` with the nodes above filled;
+// the counts are this call's (the nodes above only).
+BakeResult bakeAbove(const Scene& scene, const ClusterTree& tree, std::vector<NodeBake> nodes,
+                     const BakeBelow& below, const BakeParams& params,
+                     const Progress& progress = {});
 
 // Per node (parallel to tree.nodes, 0 for nodes not under the root), the key bakeProxies gives
 // it when no node below it is dissolved. Equal keys mark subtrees that bake to the same proxies

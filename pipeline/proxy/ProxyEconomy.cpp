@@ -6,7 +6,7 @@
 
 namespace hlod {
 
-void compactDissolved(ClusterTree& tree, BakeResult& bake) {
+std::vector<Id> compactDissolved(ClusterTree& tree, BakeResult& bake) {
     if (bake.nodes.size() != tree.nodes.size()) {
         throw Error(ErrorCode::InvalidArgument, "proxy economy: the proxies do not match the tree");
     }
@@ -16,7 +16,7 @@ void compactDissolved(ClusterTree& tree, BakeResult& bake) {
         remove[i] = bake.nodes[i].dissolved ? 1 : 0;
         any = any || remove[i];
     }
-    if (!any) return;
+    if (!any) return {};
     DissolvedTree d = dissolveNodes(tree, remove);
     std::vector<NodeBake> nodes(d.tree.nodes.size());
     for (Id i = 0; i < tree.nodes.size(); ++i) {
@@ -27,6 +27,7 @@ void compactDissolved(ClusterTree& tree, BakeResult& bake) {
     for (const ClusterNode& n : d.tree.nodes)
         bake.innerNodes += n.isLeaf() ? 0 : 1;
     tree = std::move(d.tree);
+    return std::move(d.newId);
 }
 
 BakeResult bakeEconomised(const Scene& scene, ClusterTree& tree, const BakeParams& params,
@@ -37,8 +38,8 @@ BakeResult bakeEconomised(const Scene& scene, ClusterTree& tree, const BakeParam
 }
 
 bool rootHasNoProxy(const ClusterTree& tree, const BakeResult& bake) {
-    return tree.root != kNoId && tree.root < bake.nodes.size() &&
-           !tree.nodes[tree.root].isLeaf() && !bake.nodes[tree.root].hasProxy;
+    return tree.root != kNoId && tree.root < bake.nodes.size() && !tree.nodes[tree.root].isLeaf() &&
+           !bake.nodes[tree.root].hasProxy;
 }
 
 } // namespace hlod

@@ -8,12 +8,16 @@
 // nothing changes.
 #pragma once
 
+#include <vector>
+
 #include "pipeline/cluster/ClusterTree.h"
 #include "pipeline/proxy/ProxyBaker.h"
 
 namespace hlod {
 
-void compactDissolved(ClusterTree& tree, BakeResult& bake);
+// Returns per old node its new id (kNoId when removed); empty when nothing was dissolved (ids
+// unchanged).
+std::vector<Id> compactDissolved(ClusterTree& tree, BakeResult& bake);
 
 // bakeProxies followed by compactDissolved: `tree` becomes the tree the proxies belong to.
 BakeResult bakeEconomised(const Scene& scene, ClusterTree& tree, const BakeParams& params,

@@ -55,10 +55,12 @@ ProxyLookSums instanceLookSums(const Scene& scene, Id instance, bool withAreas) 
 }
 
 std::vector<ProxyLookSums> subtreeLookSums(const Scene& scene, const ClusterTree& tree,
-                                           const std::vector<Id>& postOrder) {
+                                           const std::vector<Id>& postOrder,
+                                           std::vector<ProxyLookSums> known) {
     const bool anyEmits = std::any_of(scene.materials.begin(), scene.materials.end(),
                                       [](const Material& m) { return m.emits(); });
-    std::vector<ProxyLookSums> sums(tree.nodes.size());
+    std::vector<ProxyLookSums> sums = std::move(known);
+    sums.resize(tree.nodes.size());
     for (Id id : postOrder) {
         const ClusterNode& node = tree.nodes[id];
         if (node.isLeaf()) {

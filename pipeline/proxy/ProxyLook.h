@@ -44,9 +44,11 @@ struct ProxyLookSums {
 ProxyLookSums instanceLookSums(const Scene& scene, Id instance, bool withAreas);
 
 // Per tree node, the sums over its subtree (leaves: their instance's), for the nodes of
-// `postOrder` (children before parents; other entries stay zero).
+// `postOrder` (children before parents; other entries stay as in `known`, zero when empty:
+// a node outside postOrder counts with its entry there).
 std::vector<ProxyLookSums> subtreeLookSums(const Scene& scene, const ClusterTree& tree,
-                                           const std::vector<Id>& postOrder);
+                                           const std::vector<Id>& postOrder,
+                                           std::vector<ProxyLookSums> known = {});
 
 // Sets proxy.doubleSided and proxy.emissive from `sums`, for the proxy as it is now (with or
 // without its atlas).

@@ -371,6 +371,10 @@ Scene sliceScene(const Scene& scene, const ClusterTree& tree, const std::vector<
         for (Id c : node.children)
             stack.push_back(c);
     }
+    return sliceScene(scene, meshUsed);
+}
+
+Scene sliceScene(const Scene& scene, const std::vector<char>& meshUsed) {
     std::vector<char> textureUsed(scene.textures.size(), 0);
     Scene slice;
     slice.nodes = scene.nodes;

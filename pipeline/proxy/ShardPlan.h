@@ -76,5 +76,7 @@ ShardPlan planShards(const Scene& scene, const ClusterTree& tree, const BakePara
 // materials (every other texture without its image). Nodes, materials and instances are kept,
 // so every id is unchanged and the bake's keys are those of the whole scene.
 Scene sliceScene(const Scene& scene, const ClusterTree& tree, const std::vector<Id>& roots);
+// The same keeping the meshes with `meshUsed[m]` != 0 (one entry per scene mesh).
+Scene sliceScene(const Scene& scene, const std::vector<char>& meshUsed);
 
 } // namespace hlod

@@ -12,7 +12,9 @@
 # CACHE, PKG and the scene files must be on storage every node sees, under the same paths (or
 # give paths valid on the nodes). Prints "ARRAY_JOB_ID FINAL_JOB_ID" on stdout. Environment:
 # HLOD (the hlod binary; default hlod on PATH), HLOD_SLURM_LOGS (folder of the job logs; default
-# the current folder), and any SBATCH_* variable of sbatch (partition, account, time limit...).
+# the current folder), HLOD_FINAL_FLAGS (flags for the final build only, e.g. --no-dlod: its lean
+# step, which reads the plan and the shards' tiles instead of the scene), and any SBATCH_*
+# variable of sbatch (partition, account, time limit...).
 set -euo pipefail
 if [[ $# -lt 4 ]]; then
     echo "usage: $0 N CACHE PKG SCENE... [flags]" >&2
@@ -28,7 +30,9 @@ mkdir -p "$logs"
 array=$(sbatch --parsable --array="0-$((n - 1))" --output="$logs/hlod-shard-%A_%a.out" \
     "$here/hlod-shard.sbatch" "$cache" "$n")
 array="${array%%;*}"
+read -r -a final_flags <<< "${HLOD_FINAL_FLAGS:-}"
 final=$(sbatch --parsable --dependency="afterok:$array" --kill-on-invalid-dep=yes \
-    --output="$logs/hlod-final-%j.out" "$here/hlod-final.sbatch" "$@" -o "$pkg" --cache "$cache")
+    --output="$logs/hlod-final-%j.out" "$here/hlod-final.sbatch" "$@" "${final_flags[@]}" \
+    -o "$pkg" --cache "$cache")
 final="${final%%;*}"
 echo "$array $final"

@@ -64,6 +64,63 @@ TEST(CliDistributedBake, ShardsByHandThenTheFinalBuildWriteTheSingleMachinesPack
     EXPECT_EQ(hlod::test::folderDifference(tmp.path() / "plain", tmp.path() / "final"), "");
 }
 
+TEST(CliDistributedBake, TheLeanFinalStepReadsThePlanAndTheShardsTilesNotTheScene) {
+    // Issue 30: the shards write their subtrees' finished tiles; the final build bakes the nodes
+    // above the cut and links the tiles, without importing or clustering: the same package.
+    ScratchDir tmp;
+    const std::string cache = tmp / "cache";
+    for (const char* compression : {"meshopt", "none"}) {
+        SCOPED_TRACE(compression);
+        fs::remove_all(tmp.path() / "cache");
+        expectOk(runCli({"build", "-o", tmp / "plain", "--no-cache", "--no-dlod", "--compression",
+                         compression}),
+                 "plain build");
+        const auto plan = runCli(
+            {"plan", "--shards", "3", "--cache", cache, "--compression", compression, "--json"});
+        expectOk(plan, "plan");
+        EXPECT_TRUE(nlohmann::json::parse(plan.out)["lean_final"].get<bool>()) << plan.out;
+        for (const char* i : {"0", "1", "2"})
+            expectOk(runCli({"build", "--shard", std::string(i) + "/3", "--cache", cache}),
+                     std::string("shard ") + i);
+        EXPECT_TRUE(fs::exists(tmp.path() / "cache/plan/shard-1.tiles"));
+        const auto final = runCli({"build", "-o", tmp / "final", "--cache", cache, "--no-dlod",
+                                   "--compression", compression});
+        expectOk(final, "final build");
+        EXPECT_NE(final.out.find("not imported"), std::string::npos) << final.out;
+        EXPECT_NE(final.out.find("all 3 shards finished; lean final step"), std::string::npos)
+            << final.out;
+        EXPECT_EQ(hlod::test::folderDifference(tmp.path() / "plain", tmp.path() / "final"), "");
+    }
+    // Other parameters than the plan's: not this plan (the classic check warns and bakes all).
+    const auto other = runCli({"build", "-o", tmp / "other", "--cache", cache, "--no-dlod",
+                               "--compression", "none", "--screen-size", "200"});
+    expectOk(other, "build with another screen size");
+    EXPECT_EQ(other.out.find("lean final step"), std::string::npos) << other.out;
+    EXPECT_NE(other.err.find("holds a plan for another scene or other parameters"),
+              std::string::npos)
+        << other.err;
+    // A damaged tile is named, with the shard to run again; the package is not written.
+    std::vector<fs::path> tiles;
+    for (const auto& e : fs::directory_iterator(tmp.path() / "cache/tiles"))
+        tiles.push_back(e.path());
+    ASSERT_FALSE(tiles.empty());
+    std::sort(tiles.begin(), tiles.end());
+    {
+        std::fstream f(tiles.front(), std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(static_cast<std::streamoff>(fs::file_size(tiles.front()) / 2));
+        f.put('\x7f');
+    }
+    const auto damaged = runCli(
+        {"build", "-o", tmp / "damaged", "--cache", cache, "--no-dlod", "--compression", "none"});
+    EXPECT_EQ(damaged.exitCode, 1);
+    EXPECT_NE(damaged.err.find(tiles.front().filename().string() +
+                               ": is damaged (its bytes do not match its name): run hlod build "
+                               "--shard "),
+              std::string::npos)
+        << damaged.err;
+    EXPECT_FALSE(fs::exists(tmp.path() / "damaged"));
+}
+
 TEST(CliDistributedBake, AFinalBuildStartedTooEarlyNamesTheMissingShards) {
     ScratchDir tmp;
     const std::string cache = tmp / "cache";

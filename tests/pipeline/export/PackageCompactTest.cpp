@@ -3,6 +3,7 @@
 // only the files that changed, and the size measured in memory is what lands on disk.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 
 #include <fstream>
@@ -310,4 +311,77 @@ TEST(PackageCompact, SmallSubtreesJoinTheirParentsLeafGroup) {
             for (std::size_t triangles : parts)
                 EXPECT_GE(triangles, kMinPartTriangles);
     EXPECT_LT(groupsWithPosts, folded);
+}
+
+TEST(PackageCompact, SubtreesLaidOutApartSpliceIntoTheWholeLayoutUnchanged) {
+    // A distributed bake's shards lay out their subtrees (planSubtree) and the final step
+    // splices them in (planPackage with LayoutBlocks) without the meshes below them: the layout
+    // must be the one of the whole tree, tile for tile.
+    const Build b(makeSampleScene());
+    const PackageLayout whole = planPackage(b.scene, b.tree, b.bake);
+    // Blocks: every inner grandchild of the root (the root's children stay laid out here).
+    LayoutBlocks blocks;
+    std::vector<PackageLayout> parts;
+    std::vector<Id> roots;
+    const std::function<std::size_t(Id)> triangles = [&](Id n) -> std::size_t {
+        const ClusterNode& node = b.tree.nodes[n];
+        if (node.isLeaf())
+            return b.scene.meshes[b.scene.instances[node.instance].mesh].triangleCount();
+        std::size_t sum = 0;
+        for (Id c : node.children)
+            sum += triangles(c);
+        return sum;
+    };
+    for (Id c : b.tree.nodes[b.tree.root].children)
+        if (triangles(c) > kSmallSubtreeTriangles)
+            for (Id g : b.tree.nodes[c].children)
+                if (!b.tree.nodes[g].isLeaf() && triangles(g) > kSmallSubtreeTriangles)
+                    roots.push_back(g);
+    ASSERT_GE(roots.size(), 2u);
+    parts.reserve(roots.size());
+    for (Id r : roots)
+        parts.push_back(planSubtree(b.scene, b.tree, b.bake, r));
+    for (std::size_t i = 0; i < roots.size(); ++i)
+        blocks.byRoot[roots[i]] = &parts[i];
+    // The meshes below the blocks are not read: emptied.
+    Scene hollow = b.scene;
+    for (const Mesh& m : b.scene.meshes)
+        blocks.meshTriangles.push_back(m.triangleCount());
+    std::vector<char> above(b.scene.meshes.size(), 0);
+    for (Id n = 0; n < b.tree.nodes.size(); ++n) {
+        const ClusterNode& node = b.tree.nodes[n];
+        if (!node.isLeaf()) continue;
+        bool inBlock = false;
+        for (Id a = node.parent; a != kNoId; a = b.tree.nodes[a].parent)
+            inBlock = inBlock || blocks.byRoot.count(a) > 0;
+        if (!inBlock) above[b.scene.instances[node.instance].mesh] = 1;
+    }
+    for (std::size_t m = 0; m < hollow.meshes.size(); ++m)
+        if (!above[m]) hollow.meshes[m] = Mesh{};
+    const PackageLayout spliced = planPackage(hollow, b.tree, b.bake, blocks);
+
+    ASSERT_EQ(spliced.tiles.size(), whole.tiles.size());
+    ASSERT_EQ(spliced.contents.size(), whole.contents.size());
+    EXPECT_EQ(spliced.tileOfNode, whole.tileOfNode);
+    std::size_t fromBlocks = 0;
+    for (std::size_t i = 0; i < whole.tiles.size(); ++i) {
+        const TilePlan &a = spliced.tiles[i], &w = whole.tiles[i];
+        EXPECT_EQ(a.node, w.node) << "tile " << i;
+        EXPECT_EQ(a.parent, w.parent) << "tile " << i;
+        EXPECT_EQ(a.children, w.children) << "tile " << i;
+        EXPECT_EQ(a.content, w.content) << "tile " << i;
+        EXPECT_EQ(a.frame, w.frame) << "tile " << i;
+        EXPECT_EQ(a.geometricError, w.geometricError) << "tile " << i;
+        EXPECT_EQ(a.worldBox.min, w.worldBox.min) << "tile " << i;
+        EXPECT_EQ(a.worldBox.max, w.worldBox.max) << "tile " << i;
+    }
+    for (std::size_t i = 0; i < whole.contents.size(); ++i) {
+        EXPECT_EQ(spliced.contents[i].node, whole.contents[i].node) << "content " << i;
+        ASSERT_EQ(spliced.contents[i].leaves.size(), whole.contents[i].leaves.size());
+        for (std::size_t s = 0; s < whole.contents[i].leaves.size(); ++s)
+            EXPECT_EQ(spliced.contents[i].leaves[s].leaf, whole.contents[i].leaves[s].leaf);
+        fromBlocks += spliced.sources[i].block != kNoId ? 1 : 0;
+    }
+    EXPECT_GT(fromBlocks, 0u);
+    EXPECT_LT(fromBlocks, whole.contents.size());
 }

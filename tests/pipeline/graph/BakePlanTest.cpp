@@ -132,11 +132,11 @@ TEST(BakePlan, APlanOfTheOldFormatIsRefusedWithRunPlanAgain) {
     std::ifstream in(cache / "plan/plan.json");
     nlohmann::json j = nlohmann::json::parse(in);
     in.close();
-    j["format"] = 1; // written by an hlod before measured costs (no keys.bin)
+    j["format"] = 1; // written by an hlod before measured costs (no keys.bin) and tiles
     test::writeFile(cache / "plan/plan.json", j.dump());
     EXPECT_EQ(test::problemOf([&] { runBakeShard(cache.path(), 0, 2, 1); }),
               (cache / "plan/plan.json").string() +
-                  ": has plan format 1, this hlod reads 2 (run hlod plan again)");
+                  ": has plan format 1, this hlod reads 3 (run hlod plan again)");
 }
 
 TEST(BakePlan, ShardsRecordWhatTheyBakedAndTheNextPlanIsCostedInSeconds) {
