@@ -8,6 +8,8 @@
 
 #include "pipeline/core/Error.h"
 #include "pipeline/doc/ProjectFile.h"
+#include "pipeline/export/Package.h"
+#include "pipeline/io/Import.h"
 
 namespace hlod::cli {
 
@@ -111,8 +113,16 @@ std::optional<LeanInputs> leanInputsOf(const PipelineGraph& graph, NodeId cluste
     const NodeId importNode = graph.upstreamOf(clusterNode);
     if (importNode == kNoNode || !cluster.edits.empty()) return std::nullopt;
     const GraphNode& import = graph.node(importNode);
+    // The files the import reads (a folder: its scene files, so a file added later is seen).
+    if (import.sources.size() == 1 && isPackageFolder(import.sources[0])) return std::nullopt;
+    std::vector<std::filesystem::path> files;
+    try {
+        files = expandInputs(import.sources);
+    } catch (const Error&) {
+        return std::nullopt; // the import names the problem
+    }
     LeanInputs in;
-    for (const std::filesystem::path& p : import.sources) {
+    for (const std::filesystem::path& p : files) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(p, ec)) return std::nullopt;
         in.sources.push_back(std::filesystem::absolute(p).lexically_normal());

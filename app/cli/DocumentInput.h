@@ -34,8 +34,9 @@ std::optional<std::string> takeOutputFlag(ParamFlags& flags);
 
 // What the lean final step of a distributed bake matches a plan and a final build by
 // (pipeline/graph/LeanFinal.h): the Import node upstream of `clusterNode` (its scene files,
-// absolute, and parameters) and the Cluster node's parameters, with `compression`. Nullopt when
-// the branch cannot be matched without importing: hand edits, or a source that is not a file.
+// absolute, a folder's as the files it holds, and parameters) and the Cluster node's parameters,
+// with `compression`. Nullopt when the branch cannot be matched without importing: hand edits,
+// or a package folder as the source.
 std::optional<LeanInputs> leanInputsOf(const PipelineGraph& graph, NodeId clusterNode,
                                        GlbCompression compression);
 

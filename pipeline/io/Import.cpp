@@ -60,30 +60,6 @@ void checkReadableFile(const fs::path& file) {
     if (size == 0) throw Error(ErrorCode::EmptyFile, file, "file is empty (0 bytes)");
 }
 
-std::vector<fs::path> expandInputs(const std::vector<fs::path>& inputs) {
-    std::vector<fs::path> files;
-    for (const fs::path& in : inputs) {
-        std::error_code ec;
-        if (!fs::is_directory(in, ec)) {
-            files.push_back(in);
-            continue;
-        }
-        std::vector<fs::path> inFolder;
-        for (const auto& entry : fs::directory_iterator(in, ec)) {
-            if (entry.is_regular_file() && isLoadableExtension(entry.path())) {
-                inFolder.push_back(entry.path());
-            }
-        }
-        if (ec) throw Error(ErrorCode::FileUnreadable, in, "cannot list the folder");
-        if (inFolder.empty()) {
-            throw Error(ErrorCode::UnknownFormat, in, "folder holds no loadable scene file");
-        }
-        std::sort(inFolder.begin(), inFolder.end());
-        files.insert(files.end(), inFolder.begin(), inFolder.end());
-    }
-    return files;
-}
-
 Scene importFormat(const fs::path& file, const ImportOptions& options, const Progress& progress) {
     switch (formatForPath(file)) {
     case SceneFormat::Gltf:
@@ -113,6 +89,30 @@ Scene importOne(const fs::path& file, const ImportOptions& options, const Progre
 }
 
 } // namespace
+
+std::vector<fs::path> expandInputs(const std::vector<fs::path>& inputs) {
+    std::vector<fs::path> files;
+    for (const fs::path& in : inputs) {
+        std::error_code ec;
+        if (!fs::is_directory(in, ec)) {
+            files.push_back(in);
+            continue;
+        }
+        std::vector<fs::path> inFolder;
+        for (const auto& entry : fs::directory_iterator(in, ec)) {
+            if (entry.is_regular_file() && isLoadableExtension(entry.path())) {
+                inFolder.push_back(entry.path());
+            }
+        }
+        if (ec) throw Error(ErrorCode::FileUnreadable, in, "cannot list the folder");
+        if (inFolder.empty()) {
+            throw Error(ErrorCode::UnknownFormat, in, "folder holds no loadable scene file");
+        }
+        std::sort(inFolder.begin(), inFolder.end());
+        files.insert(files.end(), inFolder.begin(), inFolder.end());
+    }
+    return files;
+}
 
 SceneFormat formatForPath(const fs::path& path) {
     const std::string ext = lowerExtension(path);

@@ -41,6 +41,10 @@ bool isLoadableExtension(const std::filesystem::path& path);
 // The file dialog filter pattern list, e.g. {"*.glb", "*.gltf", ...}.
 std::vector<std::string> loadablePatterns();
 
+// The files importScene reads for `inputs`: a folder becomes the loadable files directly inside
+// it, sorted by name. Throws Error naming a folder that cannot be listed or holds none.
+std::vector<std::filesystem::path> expandInputs(const std::vector<std::filesystem::path>& inputs);
+
 // Loads one or more files (or folders) into one scene. With several inputs, each file's
 // content goes under its own child of the root, named after the file.
 Scene importScene(const std::vector<std::filesystem::path>& inputs,

@@ -2,12 +2,13 @@
 // cluster from Debian's packages (munged, slurmctld and slurmd with their key, socket, ports,
 // state, spool, pid and log files in a temporary folder; ../shared/notes/slurm-single-node.md),
 // submits the shard array and the dependent final job with scripts/slurm/, and checks the
-// package is byte-identical to a plain `hlod build`. A second run cancels one array task while
-// it runs (scancel), sees the final job dropped and a manual final build name the missing
-// shard, resubmits that one task and a new final job, and ends identical too. The daemons are
-// stopped by their process ids; any process left with this cluster's SLURM_CONF (job steps
-// slurmd detached) is ended by its id too.
-// Skipped, saying why, when slurmctld, slurmd or munged are not installed.
+// package is byte-identical to a plain `hlod build` (the final jobs take the lean final step,
+// issue 30: --no-dlod, the plan and the shards' tiles instead of the scene). A second run cancels
+// one array task while it runs (scancel), sees the final job dropped and a manual final build name
+// the missing shard, resubmits that one task and a new final job, and ends identical too. The
+// daemons are stopped by their process ids; any process left with this cluster's SLURM_CONF (job
+// steps slurmd detached) is ended by its id too. Skipped, saying why, when slurmctld, slurmd or
+// munged are not installed.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -340,7 +341,8 @@ TEST(SlurmCluster, ShardArrayAndDependentFinalJobWriteTheSingleMachinesPackage) 
     std::vector<std::string> plain{"build"};
     for (const std::string& a : sceneArgs())
         plain.push_back(a);
-    for (const std::string& a : {std::string("-o"), tmp / "plain", std::string("--no-cache")})
+    for (const std::string& a :
+         {std::string("-o"), tmp / "plain", std::string("--no-cache"), std::string("--no-dlod")})
         plain.push_back(a);
     const CliResult reference = runCli(plain, 120);
     ASSERT_EQ(reference.exitCode, 0) << reference.err;
@@ -362,7 +364,11 @@ TEST(SlurmCluster, ShardArrayAndDependentFinalJobWriteTheSingleMachinesPackage) 
                                     tmp / "pkg1"};
     for (const std::string& a : sceneArgs())
         submit.push_back(a);
+    // The final job without the DLOD row: the lean final step (it reads the plan and the
+    // shards' tiles, not the scene).
+    ::setenv("HLOD_FINAL_FLAGS", "--no-dlod", 1);
     const CliResult submitted = runProcess(submit, 120);
+    ::unsetenv("HLOD_FINAL_FLAGS");
     ASSERT_EQ(submitted.exitCode, 0) << submitted.err;
     std::stringstream ids(submitted.out);
     std::string array1, final1;
@@ -374,6 +380,7 @@ TEST(SlurmCluster, ShardArrayAndDependentFinalJobWriteTheSingleMachinesPackage) 
             << jobLogs();
     EXPECT_EQ(hlod::test::folderDifference(tmp.path() / "plain", tmp.path() / "pkg1"), "")
         << jobLogs();
+    EXPECT_NE(jobLogs().find("lean final step"), std::string::npos) << jobLogs();
 
     // Run 2: task 1 is cancelled while it runs. It is held at its first proxy by a claim this
     // test takes on that key (ProxyCache.h), so it is surely still running when cancelled.
@@ -395,8 +402,8 @@ TEST(SlurmCluster, ShardArrayAndDependentFinalJobWriteTheSingleMachinesPackage) 
     finalArgs.push_back(kScripts + "hlod-final.sbatch");
     for (const std::string& a : sceneArgs())
         finalArgs.push_back(a);
-    for (const std::string& a :
-         {std::string("-o"), tmp / "pkg2", std::string("--cache"), tmp / "cache2"})
+    for (const std::string& a : {std::string("-o"), tmp / "pkg2", std::string("--cache"),
+                                 tmp / "cache2", std::string("--no-dlod")})
         finalArgs.push_back(a);
     const std::string array2 = firstField(cluster.client(
         {"sbatch", "--parsable", "--array=0-3", "--output=" + logs + "/shard-%A_%a.out",
@@ -430,8 +437,8 @@ TEST(SlurmCluster, ShardArrayAndDependentFinalJobWriteTheSingleMachinesPackage) 
     std::vector<std::string> early{"build"};
     for (const std::string& a : sceneArgs())
         early.push_back(a);
-    for (const std::string& a :
-         {std::string("-o"), tmp / "pkg2", std::string("--cache"), tmp / "cache2"})
+    for (const std::string& a : {std::string("-o"), tmp / "pkg2", std::string("--cache"),
+                                 tmp / "cache2", std::string("--no-dlod")})
         early.push_back(a);
     const CliResult tooEarly = runCli(early, 120);
     EXPECT_EQ(tooEarly.exitCode, 1);

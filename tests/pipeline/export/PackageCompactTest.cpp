@@ -296,8 +296,8 @@ TEST(PackageCompact, SmallSubtreesJoinTheirParentsLeafGroup) {
     for (const TilePlan& t : layout.tiles) {
         if (t.node != kNoId || t.content < 0) continue;
         const ContentPlan& c = layout.contents[static_cast<std::size_t>(t.content)];
-        if (std::any_of(c.leaves.begin(), c.leaves.end(), [&](const LeafSlot& s) {
-                return b.scene.instances[s.instance].mesh == post;
+        if (std::any_of(c.leaves.begin(), c.leaves.end(), [&](const LeafSlot& leaf) {
+                return b.scene.instances[leaf.instance].mesh == post;
             })) {
             ++groupsWithPosts;
             std::size_t triangles = 0;
@@ -306,10 +306,12 @@ TEST(PackageCompact, SmallSubtreesJoinTheirParentsLeafGroup) {
             partsOf[t.parent].push_back(triangles);
         }
     }
-    for (const auto& [parent, parts] : partsOf)
-        if (parts.size() > 1)
+    for (const auto& [parent, parts] : partsOf) {
+        if (parts.size() > 1) {
             for (std::size_t triangles : parts)
                 EXPECT_GE(triangles, kMinPartTriangles);
+        }
+    }
     EXPECT_LT(groupsWithPosts, folded);
 }
 
