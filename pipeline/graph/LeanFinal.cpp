@@ -2,6 +2,8 @@
 // (see LeanFinal.h).
 #include "pipeline/graph/LeanFinal.h"
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -195,6 +197,41 @@ void checkTile(const fs::path& cacheDir, const std::string& uri, const fs::path&
 
 Error malformed(const fs::path& file, const std::string& what) {
     return Error(ErrorCode::Malformed, file, what + " (run the shard again)");
+}
+
+// A 64-bit key written as hex.
+std::uint64_t keyFrom(const json& j, const fs::path& file) {
+    const std::string text = j.get<std::string>();
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v, 16);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty())
+        throw malformed(file, "holds a key that is not hexadecimal");
+    return v;
+}
+
+// Node ids of the plan's tree.
+std::vector<Id> idsFrom(const json& j, std::size_t nodes, const fs::path& file) {
+    std::vector<Id> ids = j.get<std::vector<Id>>();
+    for (Id id : ids)
+        if (id >= nodes) throw malformed(file, "names a node not in the tree");
+    return ids;
+}
+
+// A block's tiles and contents refer to each other by index: all in range, tile 0 the root.
+void checkBlock(const PackageLayout& layout, const fs::path& file) {
+    const auto tiles = static_cast<int>(layout.tiles.size());
+    const auto contents = static_cast<int>(layout.contents.size());
+    bool ok = tiles > 0 && layout.tiles[0].parent == -1;
+    for (std::size_t i = 0; ok && i < layout.tiles.size(); ++i) {
+        const TilePlan& t = layout.tiles[i];
+        ok = t.content >= -1 && t.content < contents &&
+             (i == 0 || (t.parent >= 0 && t.parent < tiles));
+        for (int c : t.children)
+            ok = ok && c > 0 && c < tiles;
+    }
+    for (int t : layout.tileOfNode)
+        ok = ok && t >= -1 && t < tiles;
+    if (!ok) throw malformed(file, "holds a layout whose tiles do not fit together");
 }
 
 } // namespace
@@ -556,7 +593,7 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
                 if (node >= n || tree.nodes[node].isLeaf())
                     throw malformed(file, "names a node not in the tree");
                 NodeBake& b = nodes[node];
-                b.key = std::stoull(j.at("key").get<std::string>(), nullptr, 16);
+                b.key = keyFrom(j.at("key"), file);
                 b.diameter = j.at("d").get<double>();
                 b.errorBudget = j.at("e").get<double>();
                 b.switchDistance = j.at("s").get<double>();
@@ -569,9 +606,17 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
                 proxySize[node] = {s.at(0).get<std::size_t>(), s.at(1).get<std::size_t>(),
                                    s.at(2).get<std::size_t>()};
             }
+            const std::vector<Id> planned = planJson.at("shard_list")
+                                                .at(static_cast<std::size_t>(i))
+                                                .at("roots")
+                                                .get<std::vector<Id>>();
+            if (frag.at("handed").size() != planned.size())
+                throw malformed(file, "does not hold the shard's subtrees");
             for (const json& h : frag.at("handed")) {
                 const Id root = h.at("id").get<Id>();
-                if (root >= n) throw malformed(file, "names a node not in the tree");
+                if (std::find(planned.begin(), planned.end(), root) == planned.end() || root >= n ||
+                    tree.nodes[root].isLeaf())
+                    throw malformed(file, "names a subtree that is not the shard's");
                 std::vector<Id> stack{root};
                 while (!stack.empty()) { // everything below the cut here is the shard's
                     const Id at = stack.back();
@@ -580,26 +625,33 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
                     for (Id c : tree.nodes[at].children)
                         stack.push_back(c);
                 }
-                if (nodes[root].dissolved) below.standIns[root] = h.at("up").get<std::vector<Id>>();
+                if (nodes[root].dissolved) below.standIns[root] = idsFrom(h.at("up"), n, file);
                 below.looks[root] = look(h.at("look"));
                 for (const json& l : h.at("up_leaves")) {
                     const Id leaf = l.at("id").get<Id>();
                     if (leaf >= n || !tree.nodes[leaf].isLeaf())
                         throw malformed(file, "names a leaf not in the tree");
                     NodeBake& b = nodes[leaf];
-                    b.key = std::stoull(l.at("key").get<std::string>(), nullptr, 16);
+                    b.key = keyFrom(l.at("key"), file);
                     b.frame = {vec3(l.at("o")), mat3(l.at("r"))};
                     b.proxy.origin = b.frame.origin;
                 }
             }
-            for (const auto& [key, value] : frag.at("looks").items())
-                below.looks[std::stoul(key)] = look(value);
-            neededLeaves[static_cast<std::size_t>(i)] = frag.at("leaves").get<std::vector<Id>>();
+            for (const auto& [key, value] : frag.at("looks").items()) {
+                Id node = kNoId;
+                const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), node);
+                if (ec != std::errc() || end != key.data() + key.size() || node >= n)
+                    throw malformed(file, "names a node not in the tree");
+                below.looks[node] = look(value);
+            }
+            neededLeaves[static_cast<std::size_t>(i)] = idsFrom(frag.at("leaves"), n, file);
             for (const json& b : frag.at("blocks")) {
                 Block block;
                 for (const json& t : b.at("tiles")) {
                     TilePlan tile;
                     tile.node = idFrom(t.at("node"));
+                    if (tile.node != kNoId && tile.node >= n)
+                        throw malformed(file, "names a node not in the tree");
                     tile.content = t.at("content").get<int>();
                     tile.parent = t.at("parent").get<int>();
                     tile.children = t.at("children").get<std::vector<int>>();
@@ -612,9 +664,11 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
                     ContentPlan plan;
                     plan.proxy = c.at("proxy").get<bool>();
                     plan.node = idFrom(c.at("node"));
-                    for (const json& l : c.at("leaves")) {
+                    if (plan.node != kNoId && plan.node >= n)
+                        throw malformed(file, "names a node not in the tree");
+                    for (Id leaf : idsFrom(c.at("leaves"), n, file)) {
                         LeafSlot slot;
-                        slot.leaf = l.get<Id>();
+                        slot.leaf = leaf;
                         plan.leaves.push_back(slot);
                     }
                     GivenContent given;
@@ -649,7 +703,11 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
                     if (node >= n) throw malformed(file, "names a node not in the tree");
                     block.layout.tileOfNode[node] = p.at(1).get<int>();
                 }
-                blocks.emplace(b.at("root").get<Id>(), std::move(block));
+                checkBlock(block.layout, file);
+                const Id root = b.at("root").get<Id>();
+                if (root >= n || tree.nodes[root].isLeaf())
+                    throw malformed(file, "names a node not in the tree");
+                blocks.emplace(root, std::move(block));
             }
             const json& t = frag.at("totals");
             shardBaked += t.at("baked").get<std::size_t>();

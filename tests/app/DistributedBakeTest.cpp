@@ -99,6 +99,23 @@ TEST(CliDistributedBake, TheLeanFinalStepReadsThePlanAndTheShardsTilesNotTheScen
     EXPECT_NE(other.err.find("holds a plan for another scene or other parameters"),
               std::string::npos)
         << other.err;
+    // A damaged shard part is named; running that shard again mends it.
+    const fs::path part = tmp.path() / "cache/plan/shard-2.tiles";
+    {
+        std::fstream f(part, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(static_cast<std::streamoff>(fs::file_size(part) / 2));
+        f.put('\x01');
+    }
+    const auto broken = runCli(
+        {"build", "-o", tmp / "broken", "--cache", cache, "--no-dlod", "--compression", "none"});
+    EXPECT_EQ(broken.exitCode, 1);
+    EXPECT_NE(broken.err.find("shard-2.tiles: is damaged"), std::string::npos) << broken.err;
+    EXPECT_FALSE(fs::exists(tmp.path() / "broken"));
+    expectOk(runCli({"build", "--shard", "2/3", "--cache", cache}), "shard 2 again");
+    const auto mended = runCli(
+        {"build", "-o", tmp / "mended", "--cache", cache, "--no-dlod", "--compression", "none"});
+    expectOk(mended, "final build after the shard ran again");
+    EXPECT_EQ(hlod::test::folderDifference(tmp.path() / "plain", tmp.path() / "mended"), "");
     // A damaged tile is named, with the shard to run again; the package is not written.
     std::vector<fs::path> tiles;
     for (const auto& e : fs::directory_iterator(tmp.path() / "cache/tiles"))
