@@ -1,6 +1,8 @@
 // Small helpers of the cluster tree (ClusterTree.h).
 #include "pipeline/cluster/ClusterTree.h"
 
+#include <algorithm>
+
 #include "pipeline/core/Error.h"
 
 namespace hlod {
@@ -33,6 +35,19 @@ std::size_t ClusterTree::leafCount() const {
     for (const ClusterNode& node : nodes)
         n += node.isLeaf() ? 1 : 0;
     return n;
+}
+
+std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& roots) {
+    std::vector<Id> order, stack(roots.rbegin(), roots.rend());
+    while (!stack.empty()) {
+        const Id id = stack.back();
+        stack.pop_back();
+        order.push_back(id);
+        for (Id c : tree.nodes[id].children)
+            stack.push_back(c);
+    }
+    std::reverse(order.begin(), order.end());
+    return order;
 }
 
 } // namespace hlod

@@ -51,4 +51,8 @@ struct ClusterTree {
     int height() const { return root == kNoId ? 0 : nodes[root].level; }
 };
 
+// The nodes of the subtrees under `roots` (the whole tree: {tree.root}), every child before its
+// parent (iterative: trees can be deep).
+std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& roots);
+
 } // namespace hlod

@@ -29,28 +29,12 @@ struct Moments {
     }
 };
 
-// Nodes in an order where every child precedes its parent (iterative: trees can be deep).
-std::vector<Id> postOrder(const ClusterTree& tree) {
-    std::vector<Id> order;
-    order.reserve(tree.nodes.size());
-    std::vector<Id> stack{tree.root};
-    while (!stack.empty()) {
-        const Id id = stack.back();
-        stack.pop_back();
-        order.push_back(id);
-        for (Id c : tree.nodes[id].children)
-            stack.push_back(c);
-    }
-    std::reverse(order.begin(), order.end());
-    return order;
-}
-
 } // namespace
 
 TreeMetrics computeTreeMetrics(const ClusterTree& tree) {
     TreeMetrics m;
     if (tree.root == kNoId || tree.nodes.empty()) return m;
-    const std::vector<Id> order = postOrder(tree);
+    const std::vector<Id> order = childrenFirst(tree, {tree.root});
     std::vector<Moments> moments(tree.nodes.size());
     std::vector<int> depthOf(tree.nodes.size(), 0);
     // Depths top-down: reverse post-order visits parents first.

@@ -65,21 +65,13 @@ Aabb paddedTurned(Aabb b, double pad, const glm::dmat3& rotation) {
 // covers more than the pixel error.
 std::vector<double> monotoneErrors(const ClusterTree& tree, const BakeResult& bake) {
     std::vector<double> err(tree.nodes.size(), 0.0);
-    std::vector<Id> order{tree.root}, post;
-    while (!order.empty()) {
-        const Id n = order.back();
-        order.pop_back();
-        post.push_back(n);
-        for (Id c : tree.nodes[n].children)
-            order.push_back(c);
-    }
-    for (auto it = post.rbegin(); it != post.rend(); ++it) {
-        const ClusterNode& node = tree.nodes[*it];
+    for (Id id : childrenFirst(tree, {tree.root})) {
+        const ClusterNode& node = tree.nodes[id];
         if (node.isLeaf()) continue;
-        double e = bake.nodes[*it].errorBudget;
+        double e = bake.nodes[id].errorBudget;
         for (Id c : node.children)
             e = std::max(e, err[c]);
-        err[*it] = e;
+        err[id] = e;
     }
     if (rootHasNoProxy(tree, bake))
         err[tree.root] = std::max(err[tree.root], tree.nodes[tree.root].box.diagonal());

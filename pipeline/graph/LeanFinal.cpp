@@ -137,21 +137,6 @@ json sourcesJson(const std::vector<fs::path>& sources) {
     return a;
 }
 
-// Children before parents over the subtrees of `roots`.
-std::vector<Id> postOrderOf(const ClusterTree& tree, const std::vector<Id>& roots) {
-    std::vector<Id> order, stack(roots.rbegin(), roots.rend());
-    std::vector<Id> pre;
-    while (!stack.empty()) {
-        const Id id = stack.back();
-        stack.pop_back();
-        pre.push_back(id);
-        for (Id c : tree.nodes[id].children)
-            stack.push_back(c);
-    }
-    order.assign(pre.rbegin(), pre.rend());
-    return order;
-}
-
 // A leaf that hangs from a node above the cut, or an inner node whose parent is above the cut:
 // the leaves below `id`.
 void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out) {
@@ -253,7 +238,7 @@ nlohmann::json writeLeanPlan(const fs::path& folder, const Scene& scene, const C
     // The meshes of the leaves hanging from nodes above the cut, and of every leaf below a
     // node above the cut too small for tiles of its own (its leaves join its parent's group).
     std::vector<std::size_t> triangles(tree.nodes.size(), 0);
-    for (Id id : postOrderOf(tree, {tree.root})) {
+    for (Id id : childrenFirst(tree, {tree.root})) {
         const ClusterNode& node = tree.nodes[id];
         if (node.isLeaf() && node.instance != kNoId)
             triangles[id] = scene.meshes[scene.instances[node.instance].mesh].triangleCount();
@@ -306,7 +291,7 @@ void writeShardTiles(const fs::path& cacheDir, const json& planJson, int index, 
     const GlbCompression compression =
         glbCompressionFromString(leanIt->at("compression").get<std::string>());
     const std::size_t n = tree.nodes.size();
-    const std::vector<Id> order = postOrderOf(tree, roots);
+    const std::vector<Id> order = childrenFirst(tree, roots);
     // What a dissolved node hands up (its inputs, ProxyBaker.h) and the triangles below.
     std::vector<std::vector<Id>> standIns(n);
     std::vector<std::size_t> triangles(n, 0);

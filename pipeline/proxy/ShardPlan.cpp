@@ -23,23 +23,14 @@ constexpr std::size_t kMaxHolders = 16;
 std::vector<double> estimatedInputs(const Scene& scene, const ClusterTree& tree, double rho) {
     std::vector<double> est(tree.nodes.size(), 0.0);
     if (tree.root == kNoId) return est;
-    std::vector<Id> order; // pre-order; walked backwards it puts children before parents
-    std::vector<Id> stack{tree.root};
-    while (!stack.empty()) {
-        const Id id = stack.back();
-        stack.pop_back();
-        order.push_back(id);
-        for (Id c : tree.nodes[id].children)
-            stack.push_back(c);
-    }
-    for (auto it = order.rbegin(); it != order.rend(); ++it) {
-        const ClusterNode& node = tree.nodes[*it];
+    for (Id id : childrenFirst(tree, {tree.root})) {
+        const ClusterNode& node = tree.nodes[id];
         for (Id c : node.children) {
             const ClusterNode& child = tree.nodes[c];
             if (!child.isLeaf()) {
-                est[*it] += rho * est[c];
+                est[id] += rho * est[c];
             } else if (child.instance != kNoId) {
-                est[*it] += static_cast<double>(
+                est[id] += static_cast<double>(
                     scene.meshes[scene.instances[child.instance].mesh].triangleCount());
             }
         }
