@@ -50,4 +50,13 @@ std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& ro
     return order;
 }
 
+void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out) {
+    if (tree.nodes[id].isLeaf()) {
+        out.push_back(id);
+        return;
+    }
+    for (Id c : tree.nodes[id].children)
+        leavesBelow(tree, c, out);
+}
+
 } // namespace hlod

@@ -55,4 +55,7 @@ struct ClusterTree {
 // parent (iterative: trees can be deep).
 std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& roots);
 
+// Appends the leaves below node `id` (itself when it is a leaf) to `out`, in child order.
+void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out);
+
 } // namespace hlod

@@ -1,9 +1,13 @@
 #include "pipeline/core/AtomicFile.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -60,6 +64,30 @@ void writeFileAtomic(const std::filesystem::path& file, std::string_view bytes) 
         std::filesystem::remove(tmp, ignored);
         throw Error(ErrorCode::Io, file, "cannot move the file into place: " + ec.message());
     }
+}
+
+std::string readFileBytes(const std::filesystem::path& file, const std::string& hint) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec))
+        throw Error(ErrorCode::FileNotFound, file, "no such file" + hint);
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(ErrorCode::FileUnreadable, file, "cannot be read");
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw Error(ErrorCode::FileUnreadable, file, "cannot be read");
+    return bytes;
+}
+
+bool fileHoldsBytes(const std::filesystem::path& file, std::span<const std::uint8_t> bytes) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec) ||
+        std::filesystem::file_size(file, ec) != bytes.size() || ec)
+        return false;
+    std::ifstream in(file, std::ios::binary);
+    std::vector<char> have(bytes.size());
+    in.read(have.data(), static_cast<std::streamsize>(have.size()));
+    return in && std::equal(have.begin(), have.end(), bytes.begin(), [](char a, std::uint8_t b) {
+               return static_cast<std::uint8_t>(a) == b;
+           });
 }
 
 } // namespace hlod

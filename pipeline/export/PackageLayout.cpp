@@ -137,15 +137,6 @@ private:
         return triangles_[n] = sum;
     }
 
-    void leavesBelow(Id n, std::vector<Id>& out) const {
-        if (tree_.nodes[n].isLeaf()) {
-            out.push_back(n);
-            return;
-        }
-        for (Id c : tree_.nodes[n].children)
-            leavesBelow(c, out);
-    }
-
     // Whether inner node n (not the root) is too small to matter: its leaves join its parent's
     // leaf group (see the header).
     bool folded(Id n) const {
@@ -192,7 +183,7 @@ private:
                 leaves.push_back(c);
             } else if (folded(c)) {
                 const std::size_t first = leaves.size();
-                leavesBelow(c, leaves);
+                hlod::leavesBelow(tree_, c, leaves);
                 folds.emplace_back(c, leaves[first]);
             } else if (const PackageLayout* block = blockOf(c)) {
                 spliceBlock(c, *block, self);

@@ -57,18 +57,6 @@ private:
     std::uintmax_t blockSize_;
 };
 
-bool sameBytes(const fs::path& file, std::span<const std::uint8_t> bytes) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) != bytes.size() || ec)
-        return false;
-    std::ifstream in(file, std::ios::binary);
-    std::vector<char> have(bytes.size());
-    in.read(have.data(), static_cast<std::streamsize>(have.size()));
-    return in && std::equal(have.begin(), have.end(), bytes.begin(), [](char a, std::uint8_t b) {
-               return static_cast<std::uint8_t>(a) == b;
-           });
-}
-
 // Writes into the temporary folder; a file the old package already holds with the same bytes
 // is hard-linked from it instead (nothing written).
 class FolderSink : public Sink {
@@ -80,7 +68,7 @@ public:
         std::error_code ec;
         fs::create_directories(target.parent_path(), ec);
         if (ec) throw Error(ErrorCode::Io, target.parent_path(), "cannot create: " + ec.message());
-        if (!old_.empty() && sameBytes(old_ / rel, bytes)) {
+        if (!old_.empty() && fileHoldsBytes(old_ / rel, bytes)) {
             fs::create_hard_link(old_ / rel, target, ec);
             if (!ec) {
                 ++s_.reused;

@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -30,18 +29,6 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-std::string readWhole(const std::filesystem::path& file, const char* hint) {
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) {
-        throw Error(ErrorCode::FileNotFound, file, std::string("no such file") + hint);
-    }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error(ErrorCode::FileUnreadable, file, "cannot be read");
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw Error(ErrorCode::FileUnreadable, file, "cannot be read");
-    return bytes;
-}
-
 } // namespace
 
 namespace plan {
@@ -53,7 +40,7 @@ void writeChecked(const std::filesystem::path& file, std::string bytes) {
 }
 
 std::string readChecked(const std::filesystem::path& file) {
-    std::string bytes = readWhole(file, kRunPlan);
+    std::string bytes = readFileBytes(file, kRunPlan);
     std::uint64_t sum = 0;
     if (bytes.size() < sizeof sum) {
         throw Error(ErrorCode::Malformed, file, "is truncated (run hlod plan again)");
@@ -67,12 +54,22 @@ std::string readChecked(const std::filesystem::path& file) {
     return bytes;
 }
 
+bool shardFinished(const std::filesystem::path& folder, const std::string& planId, int index) {
+    const std::filesystem::path marker = folder / markerName(index);
+    std::error_code ec;
+    if (!std::filesystem::exists(marker, ec)) return false;
+    std::ifstream in(marker);
+    const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
+    return m.is_object() && m.value("plan", std::string()) == planId &&
+           m.value("shard", -1) == index;
+}
+
 } // namespace plan
 
 namespace {
 
 nlohmann::json readJson(const std::filesystem::path& file, const char* hint) {
-    const std::string text = readWhole(file, hint);
+    const std::string text = readFileBytes(file, hint);
     nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
     if (j.is_discarded() || !j.is_object()) {
         throw Error(ErrorCode::Malformed, file, "is not valid JSON (damaged?)");
@@ -393,17 +390,8 @@ PlanCheck checkBakePlan(const std::filesystem::path& cacheDir, const Scene& scen
     c.aboveCut = plan.contains("above_cut") ? plan.at("above_cut").size() : 0;
     c.matches = c.id == toHex(bakePlanId(scene, tree, params));
     if (!c.matches) return c;
-    for (int i = 0; i < c.shards; ++i) {
-        const std::filesystem::path marker = folder / markerName(i);
-        bool ok = false;
-        if (std::filesystem::exists(marker, ec)) {
-            std::ifstream in(marker);
-            const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
-            ok = m.is_object() && m.value("plan", std::string()) == c.id &&
-                 m.value("shard", -1) == i;
-        }
-        if (!ok) c.missing.push_back(i);
-    }
+    for (int i = 0; i < c.shards; ++i)
+        if (!shardFinished(folder, c.id, i)) c.missing.push_back(i);
     return c;
 }
 

@@ -1,13 +1,11 @@
-// The lean final step of a distributed bake: the plan's, the shards' and the final build's part
-// (see LeanFinal.h).
+// The final build's part of the lean final step (LeanFinal.h): recognising its plan, reading
+// the shards' parts, baking the nodes above the cut and writing the package.
 #include "pipeline/graph/LeanFinal.h"
 
 #include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <set>
 
@@ -17,168 +15,21 @@
 #include "pipeline/export/DiskUsage.h"
 #include "pipeline/export/Package.h"
 #include "pipeline/export/PackageLayout.h"
-#include "pipeline/export/Placement.h"
-#include "pipeline/export/TileContent.h"
 #include "pipeline/graph/BakePlan.h"
+#include "pipeline/graph/LeanParts.h"
 #include "pipeline/graph/PlanFiles.h"
 #include "pipeline/proxy/BakeStats.h"
 #include "pipeline/proxy/ContentHash.h"
 #include "pipeline/proxy/ProxyCache.h"
 #include "pipeline/proxy/ProxyEconomy.h"
-#include "pipeline/proxy/ProxyLook.h"
 #include "pipeline/scene/SceneBinary.h"
 
 namespace hlod {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using namespace lean;
 
 namespace {
-
-constexpr const char* kTopScene = "top.scene";
-constexpr const char* kSizes = "sizes.bin";
-
-std::string tilesName(int index) { return "shard-" + std::to_string(index) + ".tiles"; }
-
-// ---- JSON of the values a layout and a bake decision hold (doubles round-trip exactly) ----
-
-json vec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-glm::dvec3 vec3(const json& j) {
-    return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
-}
-
-// A square matrix, column-major.
-template <int N> json matrix(const glm::mat<N, N, double>& m) {
-    json a = json::array();
-    for (int c = 0; c < N; ++c)
-        for (int r = 0; r < N; ++r)
-            a.push_back(m[c][r]);
-    return a;
-}
-template <int N> glm::mat<N, N, double> matrix(const json& j) {
-    glm::mat<N, N, double> m(1.0);
-    for (int c = 0; c < N; ++c)
-        for (int r = 0; r < N; ++r)
-            m[c][r] = j.at(static_cast<std::size_t>(c * N + r)).get<double>();
-    return m;
-}
-json mat3(const glm::dmat3& m) { return matrix<3>(m); }
-glm::dmat3 mat3(const json& j) { return matrix<3>(j); }
-json mat4(const glm::dmat4& m) { return matrix<4>(m); }
-glm::dmat4 mat4(const json& j) { return matrix<4>(j); }
-json box(const Aabb& b) {
-    if (b.empty()) return nullptr;
-    return {b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z};
-}
-Aabb box(const json& j) {
-    Aabb b;
-    if (j.is_null()) return b;
-    b.expand(glm::dvec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()));
-    b.expand(glm::dvec3(j.at(3).get<double>(), j.at(4).get<double>(), j.at(5).get<double>()));
-    return b;
-}
-json look(const ProxyLookSums& s) {
-    return {s.doubleSided ? 1 : 0, s.area, vec3(s.emissiveOverBase), vec3(s.emissive)};
-}
-ProxyLookSums look(const json& j) {
-    ProxyLookSums s;
-    s.doubleSided = j.at(0).get<int>() != 0;
-    s.area = j.at(1).get<double>();
-    s.emissiveOverBase = vec3(j.at(2));
-    s.emissive = vec3(j.at(3));
-    return s;
-}
-json idJson(Id id) { return id == kNoId ? json() : json(id); }
-Id idFrom(const json& j) { return j.is_null() ? kNoId : j.get<Id>(); }
-
-json placementJson(const Placement& p) {
-    return {{"center", vec3(p.center)},    {"radius", p.radius},       {"sceneUp", vec3(p.sceneUp)},
-            {"eye", vec3(p.eye)},          {"target", vec3(p.target)}, {"up", vec3(p.up)},
-            {"fovYDegrees", p.fovYDegrees}};
-}
-Placement placementFrom(const json& j) {
-    Placement p;
-    p.center = vec3(j.at("center"));
-    p.radius = j.at("radius").get<double>();
-    p.sceneUp = vec3(j.at("sceneUp"));
-    p.eye = vec3(j.at("eye"));
-    p.target = vec3(j.at("target"));
-    p.up = vec3(j.at("up"));
-    p.fovYDegrees = j.at("fovYDegrees").get<double>();
-    return p;
-}
-
-// A file's size and content hash (read in pieces: a scene file may be large).
-json fingerprint(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return {{"path", file.string()}, {"bytes", -1}, {"hash", ""}};
-    std::vector<char> buf(4u << 20);
-    std::uint64_t h = 0, bytes = 0;
-    while (in) {
-        in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
-        const auto n = static_cast<std::size_t>(in.gcount());
-        if (n == 0) break;
-        h = hashBytes(buf.data(), n, h);
-        bytes += n;
-    }
-    return {{"path", file.string()}, {"bytes", bytes}, {"hash", toHex(h)}};
-}
-
-std::vector<fs::path> filesOf(const Scene& scene) {
-    std::vector<fs::path> files = scene.sourceFiles;
-    files.insert(files.end(), scene.referencedFiles.begin(), scene.referencedFiles.end());
-    return files;
-}
-
-json sourcesJson(const std::vector<fs::path>& sources) {
-    json a = json::array();
-    for (const fs::path& p : sources)
-        a.push_back(p.lexically_normal().string());
-    return a;
-}
-
-// A leaf that hangs from a node above the cut, or an inner node whose parent is above the cut:
-// the leaves below `id`.
-void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out) {
-    if (tree.nodes[id].isLeaf()) {
-        out.push_back(id);
-        return;
-    }
-    for (Id c : tree.nodes[id].children)
-        leavesBelow(tree, c, out);
-}
-
-// The bytes of `file`, empty when it cannot be read.
-std::string fileBytes(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return {};
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-bool sameFileBytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) != bytes.size()) return false;
-    const std::string have = fileBytes(file);
-    return have.size() == bytes.size() && std::memcmp(have.data(), bytes.data(), bytes.size()) == 0;
-}
-
-// A tile a shard wrote: present, and its bytes hash to its name ("tiles/HASH.glb").
-void checkTile(const fs::path& cacheDir, const std::string& uri, const fs::path& fragment,
-               int shard, int shards) {
-    const fs::path file = cacheDir / uri;
-    const std::string again = ": run hlod build --shard " + std::to_string(shard) + "/" +
-                              std::to_string(shards) + " --cache " + cacheDir.string() + " again";
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) {
-        throw Error(ErrorCode::FileNotFound, file,
-                    "is missing (a tile " + fragment.filename().string() + " names)" + again);
-    }
-    const std::string bytes = fileBytes(file);
-    const std::string name = fs::path(uri).stem().string();
-    if (toHex(hashBytes(bytes.data(), bytes.size())) != name)
-        throw Error(ErrorCode::Malformed, file,
-                    "is damaged (its bytes do not match its name)" + again);
-}
 
 Error malformed(const fs::path& file, const std::string& what) {
     return Error(ErrorCode::Malformed, file, what + " (run the shard again)");
@@ -194,11 +45,17 @@ std::uint64_t keyFrom(const json& j, const fs::path& file) {
     return v;
 }
 
-// Node ids of the plan's tree.
+// A node id of the plan's tree.
+Id idIn(const json& j, std::size_t nodes, const fs::path& file) {
+    const Id id = idFrom(j);
+    if (id != kNoId && id >= nodes) throw malformed(file, "names a node not in the tree");
+    return id;
+}
+
 std::vector<Id> idsFrom(const json& j, std::size_t nodes, const fs::path& file) {
-    std::vector<Id> ids = j.get<std::vector<Id>>();
-    for (Id id : ids)
-        if (id >= nodes) throw malformed(file, "names a node not in the tree");
+    std::vector<Id> ids;
+    for (const json& e : j)
+        ids.push_back(idIn(e, nodes, file));
     return ids;
 }
 
@@ -219,249 +76,330 @@ void checkBlock(const PackageLayout& layout, const fs::path& file) {
     if (!ok) throw malformed(file, "holds a layout whose tiles do not fit together");
 }
 
-} // namespace
-
-// ------------------------------------------------------------------------------------------
-// The plan
-
-nlohmann::json writeLeanPlan(const fs::path& folder, const Scene& scene, const ClusterTree& tree,
-                             const ShardPlan& shards, const LeanInputs& in) {
-    if (!scene.textures.empty() || tree.root == kNoId || tree.nodes[tree.root].isLeaf())
-        return nullptr;
-    for (const Material& m : scene.materials)
-        if (m.texture != kNoId || m.emissiveTexture != kNoId || !m.baseColorTexture.empty())
-            return nullptr;
-    std::vector<char> top(tree.nodes.size(), 0);
-    for (Id id : shards.top)
-        top[id] = 1;
-    if (!top[tree.root]) return nullptr;
-    // The meshes of the leaves hanging from nodes above the cut, and of every leaf below a
-    // node above the cut too small for tiles of its own (its leaves join its parent's group).
-    std::vector<std::size_t> triangles(tree.nodes.size(), 0);
-    for (Id id : childrenFirst(tree, {tree.root})) {
-        const ClusterNode& node = tree.nodes[id];
-        if (node.isLeaf() && node.instance != kNoId)
-            triangles[id] = scene.meshes[scene.instances[node.instance].mesh].triangleCount();
-        for (Id c : node.children)
-            triangles[id] += triangles[c];
+// A tile a shard wrote: present, and its bytes hash to its name ("tiles/HASH.glb").
+void checkTile(const fs::path& cacheDir, const std::string& uri, const fs::path& part, int shard,
+               int shards) {
+    const fs::path file = cacheDir / uri;
+    const std::string again = ": run hlod build --shard " + std::to_string(shard) + "/" +
+                              std::to_string(shards) + " --cache " + cacheDir.string() + " again";
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) {
+        throw Error(ErrorCode::FileNotFound, file,
+                    "is missing (a tile " + part.filename().string() + " names)" + again);
     }
-    std::vector<char> used(scene.meshes.size(), 0);
-    auto use = [&](Id leaf) {
-        if (tree.nodes[leaf].instance != kNoId)
-            used[scene.instances[tree.nodes[leaf].instance].mesh] = 1;
-    };
-    for (Id id : shards.top) {
-        if (id != tree.root && triangles[id] <= kSmallSubtreeTriangles) {
-            std::vector<Id> leaves;
-            leavesBelow(tree, id, leaves);
-            for (Id l : leaves)
-                use(l);
-        }
-        for (Id c : tree.nodes[id].children)
-            if (tree.nodes[c].isLeaf()) use(c);
-    }
-    plan::writeChecked(folder / kTopScene, writeSceneBinary(sliceScene(scene, used)));
-    std::string sizes;
-    for (const MeshSize& m : meshSizes(scene))
-        for (std::uint64_t v :
-             {std::uint64_t(m.triangles), std::uint64_t(m.vertices), std::uint64_t(m.bytes)})
-            sizes.append(reinterpret_cast<const char*>(&v), sizeof v);
-    plan::writeChecked(folder / kSizes, std::move(sizes));
-    json files = json::array();
-    for (const fs::path& f : filesOf(scene))
-        files.push_back(fingerprint(f));
-    return {{"version", HLOD_VERSION},
-            {"sources", sourcesJson(in.sources)},
-            {"files", files},
-            {"import", in.importParams},
-            {"cluster", in.clusterParams},
-            {"compression", toString(in.compression)},
-            {"placement", placementJson(packagePlacement(scene))},
-            {"top_scene", kTopScene},
-            {"sizes", kSizes}};
+    const std::string bytes = readFileBytes(file);
+    if (toHex(hashBytes(bytes.data(), bytes.size())) != fs::path(uri).stem().string())
+        throw Error(ErrorCode::Malformed, file,
+                    "is damaged (its bytes do not match its name)" + again);
 }
 
-// ------------------------------------------------------------------------------------------
-// A shard
+// A block of shard tiles in the plan tree's ids, and its contents' files.
+struct Block {
+    PackageLayout layout;
+    std::vector<GivenContent> contents;
+};
 
-void writeShardTiles(const fs::path& cacheDir, const json& planJson, int index, const Scene& slice,
-                     const ClusterTree& tree, const std::vector<Id>& roots, BakeResult bake) {
-    const auto leanIt = planJson.find("lean");
-    if (leanIt == planJson.end() || leanIt->is_null()) return;
-    const GlbCompression compression =
-        glbCompressionFromString(leanIt->at("compression").get<std::string>());
-    const std::size_t n = tree.nodes.size();
-    const std::vector<Id> order = childrenFirst(tree, roots);
-    // What a dissolved node hands up (its inputs, ProxyBaker.h) and the triangles below.
-    std::vector<std::vector<Id>> standIns(n);
-    std::vector<std::size_t> triangles(n, 0);
-    for (Id id : order) {
-        const ClusterNode& node = tree.nodes[id];
-        if (node.isLeaf()) {
-            triangles[id] = node.instance == kNoId
-                                ? 0
-                                : slice.meshes[slice.instances[node.instance].mesh].triangleCount();
-            continue;
-        }
-        for (Id c : node.children) {
-            triangles[id] += triangles[c];
-            if (!bake.nodes[id].dissolved) continue;
-            if (!tree.nodes[c].isLeaf() && bake.nodes[c].dissolved)
-                standIns[id].insert(standIns[id].end(), standIns[c].begin(), standIns[c].end());
-            else
-                standIns[id].push_back(c);
-        }
-    }
-    const std::vector<ProxyLookSums> looks = subtreeLookSums(slice, tree, order);
+// Everything the shards' parts say, in the plan tree's ids.
+struct ShardParts {
+    std::vector<NodeBake> nodes; // the shards' decisions (inner nodes, handed-up leaves)
+    std::vector<MeshSize> proxySize;
+    BakeBelow below;
+    std::map<Id, Block> blocks;          // by subtree root
+    std::vector<std::vector<Id>> leaves; // per shard: leaves whose meshes the final step needs
+    std::size_t dissolved = 0, inputTriangles = 0, proxyTriangles = 0, proxyVertices = 0,
+                damaged = 0, baked = 0, reused = 0;
+    std::set<std::string> checkedTiles;
+};
 
-    json nodes = json::array();
-    std::size_t dissolved = 0, inputTriangles = 0, proxyTriangles = 0, proxyVertices = 0;
-    for (Id id : order) {
-        const ClusterNode& node = tree.nodes[id];
-        if (node.isLeaf()) continue;
-        const NodeBake& b = bake.nodes[id];
-        dissolved += b.dissolved || !b.hasProxy ? 1 : 0;
-        inputTriangles += b.inputTriangles;
-        const bool kept = !b.dissolved && b.hasProxy && !b.proxy.empty();
-        if (kept) {
-            proxyTriangles += b.proxy.triangleCount();
-            proxyVertices += b.proxy.vertexCount();
-        }
-        nodes.push_back({{"id", id},
-                         {"key", toHex(b.key)},
-                         {"d", b.diameter},
-                         {"e", b.errorBudget},
-                         {"s", b.switchDistance},
-                         {"o", vec3(b.frame.origin)},
-                         {"r", mat3(b.frame.rotation)},
-                         {"x", b.dissolved ? 1 : 0},
-                         {"in", b.inputTriangles},
-                         {"re", b.reused ? 1 : 0},
-                         {"size", kept ? json{b.proxy.triangleCount(), b.proxy.vertexCount(),
-                                              meshBytes(b.proxy)}
-                                       : json{0, 0, 0}}});
+class PartReader {
+public:
+    PartReader(const fs::path& cacheDir, const json& planJson, const ClusterTree& tree)
+        : cacheDir_(cacheDir), plan_(planJson), tree_(tree), n_(tree.nodes.size()),
+          shards_(planJson.at("shards").get<int>()) {
+        parts_.nodes.resize(n_);
+        parts_.proxySize.resize(n_);
+        parts_.below.given.assign(n_, 0);
+        parts_.below.standIns.resize(n_);
+        parts_.below.looks.resize(n_);
+        parts_.leaves.resize(static_cast<std::size_t>(shards_));
     }
 
-    // The subtrees laid out as the whole tree lays them out: this shard's dissolved nodes
-    // removed (ProxyEconomy.h), ids mapped back to the plan tree's.
-    // What a root hands up, before the bake's nodes move into the local layout.
-    std::vector<std::vector<Id>> ups;
-    json handed = json::array();
-    for (Id r : roots) {
-        ups.push_back(bake.nodes[r].dissolved ? standIns[r] : std::vector<Id>{r});
-        // A handed-up leaf's key and frame (a parent above is framed and keyed by them).
-        json upLeaves = json::array();
-        for (Id x : ups.back())
-            if (tree.nodes[x].isLeaf())
-                upLeaves.push_back({{"id", x},
-                                    {"key", toHex(bake.nodes[x].key)},
-                                    {"o", vec3(bake.nodes[x].frame.origin)},
-                                    {"r", mat3(bake.nodes[x].frame.rotation)}});
-        handed.push_back(
-            {{"id", r}, {"up", ups.back()}, {"look", look(looks[r])}, {"up_leaves", upLeaves}});
-    }
-    const json totals = {{"baked", bake.baked},
-                         {"reused", bake.reused},
-                         {"damaged", bake.damaged},
-                         {"dissolved", dissolved},
-                         {"input_triangles", inputTriangles},
-                         {"proxy_triangles", proxyTriangles},
-                         {"proxy_vertices", proxyVertices}};
-    ClusterTree local = tree;
-    BakeResult localBake;
-    localBake.nodes = std::move(bake.nodes);
-    const std::vector<Id> newId = compactDissolved(local, localBake);
-    auto toLocal = [&](Id id) { return newId.empty() ? id : newId[id]; };
-    std::vector<Id> toPlan(local.nodes.size(), kNoId);
-    for (Id id = 0; id < n; ++id)
-        if (toLocal(id) != kNoId) toPlan[toLocal(id)] = id;
-    auto planId = [&](Id id) { return id == kNoId ? kNoId : toPlan[id]; };
-
-    TextureStore textures(slice);
-    ContentEncoder encoder(slice, localBake, textures, compression);
-    std::map<std::uint64_t, json> byKey; // content key -> its JSON (uri, leaves, counts)
-    const fs::path store = cacheDir / "tiles";
-    json blocks = json::array(), leaves = json::array(), handedLooks = json::object();
-    for (const std::vector<Id>& up : ups) {
-        for (Id x : up) {
-            if (tree.nodes[x].isLeaf()) {
-                leaves.push_back(x);
-                continue;
+    ShardParts read(const Progress& progress) {
+        for (int i = 0; i < shards_; ++i) {
+            progress.throwIfCancelled();
+            const fs::path file = planFolder(cacheDir_) / tilesName(i);
+            const std::string id = plan_.at("id").get<std::string>();
+            const json part = json::parse(plan::readChecked(file), nullptr, false);
+            if (part.is_discarded() || !part.is_object() || part.value("plan", std::string()) != id)
+                throw malformed(file,
+                                "is not shard " + std::to_string(i) + "'s part of plan " + id);
+            try {
+                readPart(part, i, file);
+            } catch (const json::exception& e) {
+                throw malformed(file, std::string("is incomplete: ") + e.what());
             }
-            handedLooks[std::to_string(x)] = look(looks[x]);
-            if (triangles[x] <= kSmallSubtreeTriangles) { // shown by the parent's leaf group
-                std::vector<Id> below;
-                leavesBelow(tree, x, below);
-                for (Id l : below)
-                    leaves.push_back(l);
-                continue;
+        }
+        return std::move(parts_);
+    }
+
+private:
+    void readPart(const json& part, int shard, const fs::path& file) {
+        for (const json& j : part.at("nodes"))
+            readDecision(j, file);
+        const std::vector<Id> planned = plan_.at("shard_list")
+                                            .at(static_cast<std::size_t>(shard))
+                                            .at("roots")
+                                            .get<std::vector<Id>>();
+        if (part.at("handed").size() != planned.size())
+            throw malformed(file, "does not hold the shard's subtrees");
+        for (const json& h : part.at("handed"))
+            readHandUp(h, planned, file);
+        for (const auto& [key, value] : part.at("looks").items()) {
+            Id node = kNoId;
+            const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), node);
+            if (ec != std::errc() || end != key.data() + key.size() || node >= n_)
+                throw malformed(file, "names a node not in the tree");
+            parts_.below.looks[node] = look(value);
+        }
+        parts_.leaves[static_cast<std::size_t>(shard)] = idsFrom(part.at("leaves"), n_, file);
+        for (const json& b : part.at("blocks"))
+            readBlock(b, shard, file);
+        const json& t = part.at("totals");
+        parts_.baked += t.at("baked").get<std::size_t>();
+        parts_.reused += t.at("reused").get<std::size_t>();
+        parts_.damaged += t.at("damaged").get<std::size_t>();
+        parts_.dissolved += t.at("dissolved").get<std::size_t>();
+        parts_.inputTriangles += t.at("input_triangles").get<std::size_t>();
+        parts_.proxyTriangles += t.at("proxy_triangles").get<std::size_t>();
+        parts_.proxyVertices += t.at("proxy_vertices").get<std::size_t>();
+    }
+
+    void readDecision(const json& j, const fs::path& file) {
+        const Id node = idIn(j.at("id"), n_, file);
+        if (node == kNoId || tree_.nodes[node].isLeaf())
+            throw malformed(file, "names a node not in the tree");
+        NodeBake& b = parts_.nodes[node];
+        b.key = keyFrom(j.at("key"), file);
+        b.diameter = j.at("d").get<double>();
+        b.errorBudget = j.at("e").get<double>();
+        b.switchDistance = j.at("s").get<double>();
+        b.frame = {vec3(j.at("o")), mat3(j.at("r"))};
+        b.proxy.origin = b.frame.origin;
+        b.dissolved = j.at("x").get<int>() != 0;
+        b.inputTriangles = j.at("in").get<std::size_t>();
+        b.reused = j.at("re").get<int>() != 0;
+        const json& s = j.at("size");
+        parts_.proxySize[node] = {s.at(0).get<std::size_t>(), s.at(1).get<std::size_t>(),
+                                  s.at(2).get<std::size_t>()};
+    }
+
+    // A subtree root of the shard: everything below it is given; what it hands up.
+    void readHandUp(const json& h, const std::vector<Id>& planned, const fs::path& file) {
+        const Id root = h.at("id").get<Id>();
+        if (std::find(planned.begin(), planned.end(), root) == planned.end() || root >= n_ ||
+            tree_.nodes[root].isLeaf())
+            throw malformed(file, "names a subtree that is not the shard's");
+        for (Id id : childrenFirst(tree_, {root}))
+            parts_.below.given[id] = 1;
+        if (parts_.nodes[root].dissolved)
+            parts_.below.standIns[root] = idsFrom(h.at("up"), n_, file);
+        parts_.below.looks[root] = look(h.at("look"));
+        for (const json& l : h.at("up_leaves")) {
+            const Id leaf = idIn(l.at("id"), n_, file);
+            if (leaf == kNoId || !tree_.nodes[leaf].isLeaf())
+                throw malformed(file, "names a leaf not in the tree");
+            NodeBake& b = parts_.nodes[leaf];
+            b.key = keyFrom(l.at("key"), file);
+            b.frame = {vec3(l.at("o")), mat3(l.at("r"))};
+            b.proxy.origin = b.frame.origin;
+        }
+    }
+
+    void readBlock(const json& b, int shard, const fs::path& file) {
+        Block block;
+        for (const json& t : b.at("tiles")) {
+            TilePlan tile;
+            tile.node = idIn(t.at("node"), n_, file);
+            tile.content = t.at("content").get<int>();
+            tile.parent = t.at("parent").get<int>();
+            tile.children = t.at("children").get<std::vector<int>>();
+            tile.frame = mat4(t.at("frame"));
+            tile.geometricError = t.at("error").get<double>();
+            tile.worldBox = box(t.at("box"));
+            block.layout.tiles.push_back(std::move(tile));
+        }
+        for (const json& c : b.at("contents")) {
+            ContentPlan plan;
+            plan.proxy = c.at("proxy").get<bool>();
+            plan.node = idIn(c.at("node"), n_, file);
+            for (Id leaf : idsFrom(c.at("leaves"), n_, file)) {
+                LeafSlot slot;
+                slot.leaf = leaf;
+                plan.leaves.push_back(slot);
             }
-            const PackageLayout layout = planSubtree(slice, local, localBake, toLocal(x));
-            json tiles = json::array(), contents = json::array(), tileOf = json::array();
-            for (const TilePlan& t : layout.tiles)
-                tiles.push_back({{"node", idJson(planId(t.node))},
-                                 {"content", t.content},
-                                 {"parent", t.parent},
-                                 {"children", t.children},
-                                 {"frame", mat4(t.frame)},
-                                 {"error", t.geometricError},
-                                 {"box", box(t.worldBox)}});
-            for (const ContentPlan& c : layout.contents) {
-                const std::uint64_t key = contentKey(c, localBake, slice);
-                auto it = byKey.find(key);
-                if (it == byKey.end()) {
-                    const EncodedContent e = encoder.encode(c);
-                    const std::string uri =
-                        "tiles/" + toHex(hashBytes(e.bytes.data(), e.bytes.size())) + ".glb";
-                    std::error_code ec;
-                    if (!sameFileBytes(cacheDir / uri, e.bytes)) { // a damaged copy is replaced
-                        fs::create_directories(store, ec);
-                        writeFileAtomic(
-                            cacheDir / uri,
-                            std::string_view(reinterpret_cast<const char*>(e.bytes.data()),
-                                             e.bytes.size()));
-                    }
-                    json where = json::array();
-                    for (const LeafInContent& l : e.leaves)
-                        where.push_back({l.node, l.merged ? 1 : 0, l.firstVertex, l.vertexCount,
-                                         l.firstIndex, l.indexCount});
-                    it = byKey
-                             .emplace(key, json{{"uri", uri},
-                                                {"where", where},
-                                                {"triangles", e.triangles},
-                                                {"vertices", e.vertices},
-                                                {"pe", e.positionError}})
-                             .first;
+            block.contents.push_back(givenContent(c, shard, file));
+            if (block.contents.back().encoded.leaves.size() != plan.leaves.size())
+                throw malformed(file, "is inconsistent");
+            block.layout.contents.push_back(std::move(plan));
+        }
+        block.layout.tileOfNode.assign(n_, -1);
+        for (const json& p : b.at("tile_of")) {
+            const Id node = idIn(p.at(0), n_, file);
+            if (node == kNoId) throw malformed(file, "names a node not in the tree");
+            block.layout.tileOfNode[node] = p.at(1).get<int>();
+        }
+        checkBlock(block.layout, file);
+        const Id root = idIn(b.at("root"), n_, file);
+        if (root == kNoId || tree_.nodes[root].isLeaf())
+            throw malformed(file, "names a node not in the tree");
+        parts_.blocks.emplace(root, std::move(block));
+    }
+
+    GivenContent givenContent(const json& c, int shard, const fs::path& file) {
+        GivenContent given;
+        given.uri = c.at("uri").get<std::string>();
+        if (given.uri.rfind("tiles/", 0) != 0 || given.uri.find("..") != std::string::npos)
+            throw malformed(file, "names a tile outside the cache");
+        given.file = cacheDir_ / given.uri;
+        if (parts_.checkedTiles.insert(given.uri).second)
+            checkTile(cacheDir_, given.uri, file, shard, shards_);
+        given.encoded.triangles = c.at("triangles").get<std::size_t>();
+        given.encoded.vertices = c.at("vertices").get<std::size_t>();
+        given.encoded.positionError = c.at("pe").get<double>();
+        for (const json& w : c.at("where")) {
+            LeafInContent in;
+            in.node = w.at(0).get<int>();
+            in.merged = w.at(1).get<int>() != 0;
+            in.firstVertex = w.at(2).get<std::size_t>();
+            in.vertexCount = w.at(3).get<std::size_t>();
+            in.firstIndex = w.at(4).get<std::size_t>();
+            in.indexCount = w.at(5).get<std::size_t>();
+            given.encoded.leaves.push_back(in);
+        }
+        return given;
+    }
+
+    fs::path cacheDir_;
+    const json& plan_;
+    const ClusterTree& tree_;
+    std::size_t n_;
+    int shards_;
+    ShardParts parts_;
+};
+
+std::vector<MeshSize> readSizes(const fs::path& file, std::size_t meshes) {
+    const std::string bytes = plan::readChecked(file);
+    if (bytes.size() != meshes * 3 * sizeof(std::uint64_t))
+        throw Error(ErrorCode::Malformed, file, "does not match the plan's scene");
+    std::vector<std::uint64_t> v(bytes.size() / sizeof(std::uint64_t));
+    std::memcpy(v.data(), bytes.data(), bytes.size());
+    std::vector<MeshSize> sizes;
+    for (std::size_t m = 0; m < meshes; ++m)
+        sizes.push_back({v[3 * m], v[3 * m + 1], v[3 * m + 2]});
+    return sizes;
+}
+
+// The meshes of the leaves the shards hand up, from their slices (one slice at a time).
+void loadHandedMeshes(Scene& scene, const ClusterTree& tree, const fs::path& folder,
+                      const std::vector<std::vector<Id>>& leaves) {
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        if (leaves[i].empty()) continue;
+        const fs::path file = folder / plan::sliceName(static_cast<int>(i));
+        Scene slice = readSceneBinary(plan::readChecked(file), file);
+        if (slice.meshes.size() != scene.meshes.size())
+            throw Error(ErrorCode::Malformed, file, "does not match the plan's scene");
+        for (Id l : leaves[i]) {
+            if (!tree.nodes[l].isLeaf() || tree.nodes[l].instance == kNoId) continue;
+            const Id mesh = scene.instances.at(tree.nodes[l].instance).mesh;
+            if (scene.meshes[mesh].indices.empty())
+                scene.meshes[mesh] = std::move(slice.meshes[mesh]);
+        }
+    }
+}
+
+// The proxies the nodes above the cut are baked from: the kept nodes the shards hand up.
+void loadHandedProxies(ShardParts& parts, const ClusterTree& tree, const fs::path& cacheDir) {
+    const ProxyCache cache(cacheDir);
+    const BakeBelow& below = parts.below;
+    for (Id top = 0; top < tree.nodes.size(); ++top) {
+        if (below.given[top] || tree.nodes[top].isLeaf()) continue;
+        for (Id c : tree.nodes[top].children) {
+            if (!below.given[c] || tree.nodes[c].isLeaf()) continue;
+            const std::vector<Id> up =
+                parts.nodes[c].dissolved ? below.standIns[c] : std::vector<Id>{c};
+            for (Id x : up) {
+                NodeBake& b = parts.nodes[x];
+                if (tree.nodes[x].isLeaf() || !b.proxy.empty()) continue;
+                bool bad = false;
+                std::optional<ProxyMesh> p = cache.load(b.key, &bad);
+                if (!p) {
+                    throw Error(ErrorCode::FileNotFound, cacheDir,
+                                std::string("the proxy of node ") + std::to_string(x) + " is " +
+                                    (bad ? "damaged" : "missing") +
+                                    " (run hlod build --shard again for the shard that baked it)");
                 }
-                json content = it->second;
-                json leafIds = json::array();
-                for (const LeafSlot& s : c.leaves)
-                    leafIds.push_back(planId(s.leaf));
-                content["proxy"] = c.proxy;
-                content["node"] = idJson(planId(c.node));
-                content["leaves"] = leafIds;
-                contents.push_back(std::move(content));
+                b.proxy = std::move(*p);
+                b.proxy.origin = b.frame.origin;
             }
-            for (Id id = 0; id < layout.tileOfNode.size(); ++id)
-                if (layout.tileOfNode[id] >= 0)
-                    tileOf.push_back({planId(id), layout.tileOfNode[id]});
-            blocks.push_back(
-                {{"root", x}, {"tiles", tiles}, {"contents", contents}, {"tile_of", tileOf}});
         }
     }
-    if (!textures.files().empty()) {
-        throw Error(ErrorCode::InvalidArgument,
-                    "the lean final step cannot take textured tiles (plan.json says the scene has "
-                    "no textures)");
-    }
-    const json fragment = {{"plan", planJson.at("id")}, {"shard", index},       {"nodes", nodes},
-                           {"handed", handed},          {"looks", handedLooks}, {"leaves", leaves},
-                           {"blocks", blocks},          {"totals", totals}};
-    plan::writeChecked(planFolder(cacheDir) / tilesName(index), fragment.dump());
 }
 
-// ------------------------------------------------------------------------------------------
-// The final build
+// The whole bake from the shards' decisions and the nodes baked above the cut: counts summed,
+// proxy sizes, the proxies below the cut dropped (the package takes the shards' tiles), the
+// dissolved nodes removed. Returns per plan node its id in `tree` (kNoId: removed).
+std::vector<Id> combine(ShardParts& parts, ClusterTree& tree, BakeResult& bake, SizeTable& sizes) {
+    const std::size_t n = tree.nodes.size();
+    bake.dissolved += parts.dissolved;
+    bake.inputTriangles += parts.inputTriangles;
+    bake.proxyTriangles += parts.proxyTriangles;
+    bake.proxyVertices += parts.proxyVertices;
+    bake.damaged += parts.damaged;
+    for (Id id = 0; id < n; ++id) {
+        NodeBake& b = bake.nodes[id];
+        if (parts.below.given[id])
+            b.proxy = ProxyMesh{b.frame.origin, {}, {}, {}, {}};
+        else if (!tree.nodes[id].isLeaf() && !b.proxy.empty())
+            parts.proxySize[id] = {b.proxy.triangleCount(), b.proxy.vertexCount(),
+                                   meshBytes(b.proxy)};
+    }
+    std::vector<Id> newId = compactDissolved(tree, bake);
+    if (newId.empty()) {
+        newId.resize(n);
+        for (Id id = 0; id < n; ++id)
+            newId[id] = id;
+    }
+    bake.innerNodes = 0;
+    for (const ClusterNode& node : tree.nodes)
+        bake.innerNodes += node.isLeaf() ? 0 : 1;
+    sizes.proxies.assign(tree.nodes.size(), MeshSize{});
+    for (Id id = 0; id < n; ++id)
+        if (newId[id] != kNoId) sizes.proxies[newId[id]] = parts.proxySize[id];
+    return newId;
+}
+
+// A block's ids renumbered from the plan tree's into the final tree's (`newId`).
+void renumber(PackageLayout& layout, const std::vector<Id>& newId, std::size_t nodes) {
+    auto to = [&](Id id) { return id == kNoId ? kNoId : newId[id]; };
+    for (TilePlan& t : layout.tiles)
+        t.node = to(t.node);
+    for (ContentPlan& c : layout.contents) {
+        c.node = to(c.node);
+        for (LeafSlot& s : c.leaves)
+            s.leaf = to(s.leaf);
+    }
+    std::vector<int> tileOf(nodes, -1);
+    for (Id id = 0; id < layout.tileOfNode.size(); ++id)
+        if (layout.tileOfNode[id] >= 0 && newId[id] != kNoId)
+            tileOf[newId[id]] = layout.tileOfNode[id];
+    layout.tileOfNode = std::move(tileOf);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+} // namespace
 
 LeanCheck checkLeanPlan(const LeanFinalRequest& r) {
     LeanCheck c;
@@ -496,307 +434,46 @@ LeanCheck checkLeanPlan(const LeanFinalRequest& r) {
     c.id = planJson.at("id").get<std::string>();
     c.shards = planJson.at("shards").get<int>();
     c.aboveCut = planJson.value("above_cut", json::array()).size();
-    for (int i = 0; i < c.shards; ++i) {
-        const fs::path marker = folder / plan::markerName(i);
-        bool ok = false;
-        if (fs::exists(marker, ec) && fs::exists(folder / tilesName(i), ec)) {
-            std::ifstream in(marker);
-            const json m = json::parse(in, nullptr, false);
-            ok = m.is_object() && m.value("plan", std::string()) == c.id &&
-                 m.value("shard", -1) == i;
-        }
-        if (!ok) c.missing.push_back(i);
-    }
+    for (int i = 0; i < c.shards; ++i)
+        if (!plan::shardFinished(folder, c.id, i) || !fs::exists(folder / tilesName(i), ec))
+            c.missing.push_back(i);
     return c;
 }
-
-namespace {
-
-// One shard's part as the final step reads it.
-struct ShardPart {
-    std::vector<Id> leaves; // leaves the final step needs the meshes of
-};
-
-// A block of shard tiles in the plan tree's ids, and its contents' files.
-struct Block {
-    PackageLayout layout;
-    std::vector<GivenContent> contents;
-};
-
-} // namespace
 
 LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const fs::path folder = planFolder(r.cacheDir);
     const json planJson = plan::readPlanJson(r.cacheDir);
-    const fs::path planFile = folder / plan::kPlanFile;
-    const std::string planIdText = planJson.at("id").get<std::string>();
-    const json& lean = planJson.at("lean");
-    const int shards = planJson.at("shards").get<int>();
     BakeParams params = bakeParamsFrom(r.bakeValues);
     params.threads = r.threads;
     params.cacheDir = r.cacheDir;
-
     ClusterTree tree = readClusterTreeBinary(plan::readChecked(folder / plan::kTreeFile),
                                              folder / plan::kTreeFile);
     Scene scene = readSceneBinary(plan::readChecked(folder / kTopScene), folder / kTopScene);
     SizeTable sizes;
-    {
-        const std::string bytes = plan::readChecked(folder / kSizes);
-        if (bytes.size() != scene.meshes.size() * 3 * sizeof(std::uint64_t))
-            throw Error(ErrorCode::Malformed, folder / kSizes, "does not match the plan's scene");
-        std::vector<std::uint64_t> v(bytes.size() / sizeof(std::uint64_t));
-        std::memcpy(v.data(), bytes.data(), bytes.size());
-        for (std::size_t m = 0; m < scene.meshes.size(); ++m)
-            sizes.meshes.push_back({v[3 * m], v[3 * m + 1], v[3 * m + 2]});
-    }
-    const std::size_t n = tree.nodes.size();
+    sizes.meshes = readSizes(folder / kSizes, scene.meshes.size());
 
-    // Every shard's decisions, hand-ups and blocks.
-    std::vector<NodeBake> nodes(n);
-    std::vector<MeshSize> proxySize(n);
-    BakeBelow below;
-    below.given.assign(n, 0);
-    below.standIns.resize(n);
-    below.looks.resize(n);
-    std::map<Id, Block> blocks;
-    std::size_t dissolved = 0, inputTriangles = 0, proxyTriangles = 0, proxyVertices = 0,
-                damaged = 0, shardBaked = 0, shardReused = 0;
-    std::vector<std::vector<Id>> neededLeaves(static_cast<std::size_t>(shards));
-    std::set<std::string> checked; // tiles verified
-    for (int i = 0; i < shards; ++i) {
-        progress.throwIfCancelled();
-        const fs::path file = folder / tilesName(i);
-        const json frag = json::parse(plan::readChecked(file), nullptr, false);
-        if (frag.is_discarded() || !frag.is_object() ||
-            frag.value("plan", std::string()) != planIdText)
-            throw malformed(file,
-                            "is not shard " + std::to_string(i) + "'s part of plan " + planIdText);
-        try {
-            for (const json& j : frag.at("nodes")) {
-                const Id node = j.at("id").get<Id>();
-                if (node >= n || tree.nodes[node].isLeaf())
-                    throw malformed(file, "names a node not in the tree");
-                NodeBake& b = nodes[node];
-                b.key = keyFrom(j.at("key"), file);
-                b.diameter = j.at("d").get<double>();
-                b.errorBudget = j.at("e").get<double>();
-                b.switchDistance = j.at("s").get<double>();
-                b.frame = {vec3(j.at("o")), mat3(j.at("r"))};
-                b.proxy.origin = b.frame.origin;
-                b.dissolved = j.at("x").get<int>() != 0;
-                b.inputTriangles = j.at("in").get<std::size_t>();
-                b.reused = j.at("re").get<int>() != 0;
-                const json& s = j.at("size");
-                proxySize[node] = {s.at(0).get<std::size_t>(), s.at(1).get<std::size_t>(),
-                                   s.at(2).get<std::size_t>()};
-            }
-            const std::vector<Id> planned = planJson.at("shard_list")
-                                                .at(static_cast<std::size_t>(i))
-                                                .at("roots")
-                                                .get<std::vector<Id>>();
-            if (frag.at("handed").size() != planned.size())
-                throw malformed(file, "does not hold the shard's subtrees");
-            for (const json& h : frag.at("handed")) {
-                const Id root = h.at("id").get<Id>();
-                if (std::find(planned.begin(), planned.end(), root) == planned.end() || root >= n ||
-                    tree.nodes[root].isLeaf())
-                    throw malformed(file, "names a subtree that is not the shard's");
-                std::vector<Id> stack{root};
-                while (!stack.empty()) { // everything below the cut here is the shard's
-                    const Id at = stack.back();
-                    stack.pop_back();
-                    below.given[at] = 1;
-                    for (Id c : tree.nodes[at].children)
-                        stack.push_back(c);
-                }
-                if (nodes[root].dissolved) below.standIns[root] = idsFrom(h.at("up"), n, file);
-                below.looks[root] = look(h.at("look"));
-                for (const json& l : h.at("up_leaves")) {
-                    const Id leaf = l.at("id").get<Id>();
-                    if (leaf >= n || !tree.nodes[leaf].isLeaf())
-                        throw malformed(file, "names a leaf not in the tree");
-                    NodeBake& b = nodes[leaf];
-                    b.key = keyFrom(l.at("key"), file);
-                    b.frame = {vec3(l.at("o")), mat3(l.at("r"))};
-                    b.proxy.origin = b.frame.origin;
-                }
-            }
-            for (const auto& [key, value] : frag.at("looks").items()) {
-                Id node = kNoId;
-                const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), node);
-                if (ec != std::errc() || end != key.data() + key.size() || node >= n)
-                    throw malformed(file, "names a node not in the tree");
-                below.looks[node] = look(value);
-            }
-            neededLeaves[static_cast<std::size_t>(i)] = idsFrom(frag.at("leaves"), n, file);
-            for (const json& b : frag.at("blocks")) {
-                Block block;
-                for (const json& t : b.at("tiles")) {
-                    TilePlan tile;
-                    tile.node = idFrom(t.at("node"));
-                    if (tile.node != kNoId && tile.node >= n)
-                        throw malformed(file, "names a node not in the tree");
-                    tile.content = t.at("content").get<int>();
-                    tile.parent = t.at("parent").get<int>();
-                    tile.children = t.at("children").get<std::vector<int>>();
-                    tile.frame = mat4(t.at("frame"));
-                    tile.geometricError = t.at("error").get<double>();
-                    tile.worldBox = box(t.at("box"));
-                    block.layout.tiles.push_back(std::move(tile));
-                }
-                for (const json& c : b.at("contents")) {
-                    ContentPlan plan;
-                    plan.proxy = c.at("proxy").get<bool>();
-                    plan.node = idFrom(c.at("node"));
-                    if (plan.node != kNoId && plan.node >= n)
-                        throw malformed(file, "names a node not in the tree");
-                    for (Id leaf : idsFrom(c.at("leaves"), n, file)) {
-                        LeafSlot slot;
-                        slot.leaf = leaf;
-                        plan.leaves.push_back(slot);
-                    }
-                    GivenContent given;
-                    given.uri = c.at("uri").get<std::string>();
-                    if (given.uri.rfind("tiles/", 0) != 0 ||
-                        given.uri.find("..") != std::string::npos)
-                        throw malformed(file, "names a tile outside the cache");
-                    given.file = r.cacheDir / given.uri;
-                    if (checked.insert(given.uri).second)
-                        checkTile(r.cacheDir, given.uri, file, i, shards);
-                    given.encoded.triangles = c.at("triangles").get<std::size_t>();
-                    given.encoded.vertices = c.at("vertices").get<std::size_t>();
-                    given.encoded.positionError = c.at("pe").get<double>();
-                    for (const json& w : c.at("where")) {
-                        LeafInContent in;
-                        in.node = w.at(0).get<int>();
-                        in.merged = w.at(1).get<int>() != 0;
-                        in.firstVertex = w.at(2).get<std::size_t>();
-                        in.vertexCount = w.at(3).get<std::size_t>();
-                        in.firstIndex = w.at(4).get<std::size_t>();
-                        in.indexCount = w.at(5).get<std::size_t>();
-                        given.encoded.leaves.push_back(in);
-                    }
-                    if (given.encoded.leaves.size() != plan.leaves.size())
-                        throw malformed(file, "is inconsistent");
-                    block.layout.contents.push_back(std::move(plan));
-                    block.contents.push_back(std::move(given));
-                }
-                block.layout.tileOfNode.assign(n, -1);
-                for (const json& p : b.at("tile_of")) {
-                    const Id node = p.at(0).get<Id>();
-                    if (node >= n) throw malformed(file, "names a node not in the tree");
-                    block.layout.tileOfNode[node] = p.at(1).get<int>();
-                }
-                checkBlock(block.layout, file);
-                const Id root = b.at("root").get<Id>();
-                if (root >= n || tree.nodes[root].isLeaf())
-                    throw malformed(file, "names a node not in the tree");
-                blocks.emplace(root, std::move(block));
-            }
-            const json& t = frag.at("totals");
-            shardBaked += t.at("baked").get<std::size_t>();
-            shardReused += t.at("reused").get<std::size_t>();
-            damaged += t.at("damaged").get<std::size_t>();
-            dissolved += t.at("dissolved").get<std::size_t>();
-            inputTriangles += t.at("input_triangles").get<std::size_t>();
-            proxyTriangles += t.at("proxy_triangles").get<std::size_t>();
-            proxyVertices += t.at("proxy_vertices").get<std::size_t>();
-        } catch (const json::exception& e) {
-            throw malformed(file, std::string("is incomplete: ") + e.what());
-        }
-    }
+    ShardParts parts = PartReader(r.cacheDir, planJson, tree).read(progress);
+    loadHandedMeshes(scene, tree, folder, parts.leaves);
+    loadHandedProxies(parts, tree, r.cacheDir);
+    BakeResult bake = bakeAbove(scene, tree, std::move(parts.nodes), parts.below, params, progress);
+    const std::vector<Id> newId = combine(parts, tree, bake, sizes);
 
-    // The meshes of the leaves handed up, from the shards' slices (one at a time).
-    for (int i = 0; i < shards; ++i) {
-        const std::vector<Id>& leaves = neededLeaves[static_cast<std::size_t>(i)];
-        if (leaves.empty()) continue;
-        const fs::path file = folder / plan::sliceName(i);
-        Scene slice = readSceneBinary(plan::readChecked(file), file);
-        if (slice.meshes.size() != scene.meshes.size())
-            throw Error(ErrorCode::Malformed, file, "does not match the plan's scene");
-        for (Id l : leaves) {
-            if (l >= n || !tree.nodes[l].isLeaf() || tree.nodes[l].instance == kNoId) continue;
-            const Id mesh = scene.instances.at(tree.nodes[l].instance).mesh;
-            if (scene.meshes[mesh].indices.empty())
-                scene.meshes[mesh] = std::move(slice.meshes[mesh]);
-        }
-    }
-    // The proxies the nodes above are baked from: the kept nodes the shards hand up.
-    const ProxyCache cache(r.cacheDir);
-    for (Id top = 0; top < n; ++top) {
-        if (below.given[top] || tree.nodes[top].isLeaf()) continue;
-        for (Id c : tree.nodes[top].children) {
-            if (!below.given[c] || tree.nodes[c].isLeaf()) continue;
-            const std::vector<Id> up = nodes[c].dissolved ? below.standIns[c] : std::vector<Id>{c};
-            for (Id x : up) {
-                if (x >= n || tree.nodes[x].isLeaf() || !nodes[x].proxy.empty()) continue;
-                bool bad = false;
-                std::optional<ProxyMesh> p = cache.load(nodes[x].key, &bad);
-                if (!p) {
-                    throw Error(ErrorCode::FileNotFound, r.cacheDir,
-                                std::string("the proxy of node ") + std::to_string(x) + " is " +
-                                    (bad ? "damaged" : "missing") +
-                                    " (run hlod build --shard again for the shard that baked it)");
-                }
-                nodes[x].proxy = std::move(*p);
-                nodes[x].proxy.origin = nodes[x].frame.origin;
-            }
-        }
-    }
-
-    BakeResult bake = bakeAbove(scene, tree, std::move(nodes), below, params, progress);
-    // The whole bake's counts: the shards' and this step's (BakeStats, the manifest).
-    bake.dissolved += dissolved;
-    bake.inputTriangles += inputTriangles;
-    bake.proxyTriangles += proxyTriangles;
-    bake.proxyVertices += proxyVertices;
-    bake.damaged += damaged;
-    for (Id id = 0; id < n; ++id) {
-        const NodeBake& b = bake.nodes[id];
-        if (!below.given[id] && !tree.nodes[id].isLeaf() && !b.dissolved && b.hasProxy &&
-            !b.proxy.empty())
-            proxySize[id] = {b.proxy.triangleCount(), b.proxy.vertexCount(), meshBytes(b.proxy)};
-        // Proxies below the cut were read only to bake the nodes above: the package takes
-        // the shards' tiles.
-        if (below.given[id]) bake.nodes[id].proxy = ProxyMesh{b.frame.origin, {}, {}, {}, {}};
-    }
-    const std::vector<Id> newId = compactDissolved(tree, bake);
-    auto finalId = [&](Id id) { return id == kNoId || newId.empty() ? id : newId[id]; };
-    bake.innerNodes = 0;
-    for (const ClusterNode& node : tree.nodes)
-        bake.innerNodes += node.isLeaf() ? 0 : 1;
-    sizes.proxies.assign(tree.nodes.size(), MeshSize{});
-    for (Id id = 0; id < n; ++id)
-        if (finalId(id) != kNoId) sizes.proxies[finalId(id)] = proxySize[id];
-
-    // The blocks in the final tree's ids.
+    // The shards' blocks spliced into the layout of the whole tree.
     LayoutBlocks layoutBlocks;
-    std::map<Id, const Block*> blockOf; // by final root id
-    for (auto& [root, block] : blocks) {
-        for (TilePlan& t : block.layout.tiles)
-            t.node = finalId(t.node);
-        for (ContentPlan& c : block.layout.contents) {
-            c.node = finalId(c.node);
-            for (LeafSlot& s : c.leaves)
-                s.leaf = finalId(s.leaf);
-        }
-        std::vector<int> tileOf(tree.nodes.size(), -1);
-        for (Id id = 0; id < n; ++id)
-            if (block.layout.tileOfNode[id] >= 0 && finalId(id) != kNoId)
-                tileOf[finalId(id)] = block.layout.tileOfNode[id];
-        block.layout.tileOfNode = std::move(tileOf);
-        layoutBlocks.byRoot[finalId(root)] = &block.layout;
-        blockOf[finalId(root)] = &block;
+    std::map<Id, const Block*> blockOf; // by root, final ids
+    for (auto& [root, block] : parts.blocks) {
+        renumber(block.layout, newId, tree.nodes.size());
+        layoutBlocks.byRoot[newId[root]] = &block.layout;
+        blockOf[newId[root]] = &block;
     }
     for (const MeshSize& m : sizes.meshes)
         layoutBlocks.meshTriangles.push_back(m.triangles);
     const PackageLayout layout = planPackage(scene, tree, bake, layoutBlocks);
-    for (std::size_t i = 0; i < layout.contents.size(); ++i) {
-        const ContentSource& s = layout.sources[i];
+    for (const ContentSource& s : layout.sources)
         if (s.block != kNoId && !blockOf.count(s.block))
-            throw Error(ErrorCode::Malformed, planFile, "a shard's tiles do not match the tree");
-    }
+            throw Error(ErrorCode::Malformed, folder / plan::kPlanFile,
+                        "a shard's tiles do not match the tree");
 
     LeanFinalResult out;
     const HandEdits edits;
@@ -809,23 +486,22 @@ LeanFinalResult runLeanFinal(const LeanFinalRequest& r, const Progress& progress
     out.export_.output = r.output;
     out.export_.info = makeBuildInfo(in, false);
     const auto writeStart = std::chrono::steady_clock::now();
-    const PackageParts parts{layout,
-                             [&](const ContentSource& s) -> const GivenContent& {
-                                 return blockOf.at(s.block)->contents.at(
-                                     static_cast<std::size_t>(s.index));
-                             },
-                             sizes, placementFrom(lean.at("placement"))};
+    const PackageParts package{layout,
+                               [&](const ContentSource& s) -> const GivenContent& {
+                                   return blockOf.at(s.block)->contents.at(
+                                       static_cast<std::size_t>(s.index));
+                               },
+                               sizes, placementFrom(planJson.at("lean").at("placement"))};
     out.export_.written =
         writePackage(r.output, scene, tree, bake, params,
-                     packageOptionsFor(in, out.export_.info, options), parts, progress);
-    out.export_.writeSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - writeStart).count();
+                     packageOptionsFor(in, out.export_.info, options), package, progress);
+    out.export_.writeSeconds = secondsSince(writeStart);
     out.export_.source = sourceFootprint(scene);
-    out.shardBaked = shardBaked;
-    out.shardReused = shardReused;
+    out.shardBaked = parts.baked;
+    out.shardReused = parts.reused;
     out.tree = std::move(tree);
     out.bake = std::move(bake);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.seconds = secondsSince(start);
     return out;
 }
 

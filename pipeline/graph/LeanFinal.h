@@ -3,6 +3,8 @@
 // the nodes above the cut and writes the package from the plan and the shards' tiles, without
 // importing or clustering the scene again. Its memory is the tree, the meshes of the leaves that
 // hang from nodes above the cut and the proxies they are baked from, not the scene.
+// Code: the plan's and the shards' part in ShardTiles.cpp, the final build's in LeanFinal.cpp,
+// what they share (file names, JSON) in LeanParts.h.
 //
 // Files (in CACHE/plan/ unless said):
 //   plan.json "lean"  what the final build recognises its plan by without importing (the scene

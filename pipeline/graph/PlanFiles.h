@@ -24,6 +24,9 @@ inline std::string markerName(int index) { return "shard-" + std::to_string(inde
 void writeChecked(const std::filesystem::path& file, std::string bytes);
 std::string readChecked(const std::filesystem::path& file);
 
+// Whether plan folder `folder` holds shard `index`'s marker (shard-I.done) for plan `planId`.
+bool shardFinished(const std::filesystem::path& folder, const std::string& planId, int index);
+
 // CACHE/plan/plan.json, checked for its format and shape.
 nlohmann::json readPlanJson(const std::filesystem::path& cacheDir);
 
