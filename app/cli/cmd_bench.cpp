@@ -9,10 +9,16 @@
 // Writes DIR/summary.json (last), frames.csv, tables.md, camera_path.json, plot_*.png and
 // side_by_side_*.png (and frames/*.png with --frame-images). Needs an X display (xvfb-run -a on a
 // headless machine).
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "Args.h"
 #include "Commands.h"
@@ -66,11 +72,46 @@ void parseSize(const std::string& text, int& w, int& h) {
 } // namespace
 #endif
 
+#ifndef HLOD_HAVE_VTK
+namespace {
+
+// hlod-bench, the build of this CLI with the VTK renderer (app/CMakeLists.txt): next to this
+// program (the build tree) or in ../lib/hlod-studio (installed); empty when there is none.
+std::filesystem::path benchProgram() {
+    std::error_code ec;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    for (const std::filesystem::path& p :
+         {self.parent_path() / "hlod-bench",
+          self.parent_path().parent_path() / "lib" / "hlod-studio" / "hlod-bench"}) {
+        if (::access(p.c_str(), X_OK) == 0) return p;
+    }
+    return {};
+}
+
+} // namespace
+#endif
+
 int runBench(const CommandArgs& argv) {
     const Args args(argv, command("bench"));
 #ifndef HLOD_HAVE_VTK
-    throw Error(ErrorCode::InvalidArgument,
-                "this hlod was built without VTK (HLOD_BUILD_GUI=OFF): bench cannot render");
+    // The renderer's libraries (VTK, OpenGL) load only in the program that renders.
+    const std::filesystem::path program = benchProgram();
+    if (program.empty())
+        throw Error(ErrorCode::InvalidArgument,
+                    "bench cannot render: hlod-bench (hlod built with VTK, HLOD_BUILD_GUI=ON) is "
+                    "neither next to hlod nor in ../lib/hlod-studio");
+    std::vector<std::string> all{"hlod", "bench"};
+    all.insert(all.end(), argv.begin(), argv.end());
+    std::vector<char*> cargs;
+    for (std::string& a : all)
+        cargs.push_back(a.data());
+    cargs.push_back(nullptr);
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::execv(program.c_str(), cargs.data());
+    throw Error(ErrorCode::FileUnreadable, program,
+                std::string("cannot run it: ") + std::strerror(errno));
 #else
     const CommandSpec& spec = command("bench");
     const auto flags = paramsFromArgs(args, spec.kinds, spec.params); // usage errors first

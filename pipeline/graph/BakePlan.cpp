@@ -331,6 +331,7 @@ ShardResult runBakeShard(const std::filesystem::path& cacheDir, int index, int s
     }
     params.cacheDir = cacheDir;
     params.threads = threads;
+    params.boundWorkingSets = true; // a shard's machine is sized by its peak memory
     const ClusterTree tree =
         readClusterTreeBinary(readChecked(folder / kTreeFile), folder / kTreeFile);
     const std::filesystem::path sliceFile = folder / sliceName(index);

@@ -20,9 +20,11 @@
 #include <set>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/core/OnDemand.h"
 #include "pipeline/io/Ac3dTextures.h"
 #include "pipeline/io/ImageDecode.h"
 #include "pipeline/io/Import.h"
+#include "pipeline/io/ImportModules.h"
 #include "pipeline/io/Precheck.h"
 
 namespace hlod {
@@ -352,7 +354,7 @@ void checkRawScene(const aiScene* as, const fs::path& file) {
 
 } // namespace
 
-Scene importAssimp(const fs::path& file, const ImportOptions& options) {
+Scene importAssimpHere(const fs::path& file, const ImportOptions& options) {
     precheckElementCounts(file, options.limits);
     const fs::path folder = fs::absolute(file).parent_path();
     Assimp::Importer importer;
@@ -409,3 +411,5 @@ Scene importAssimp(const fs::path& file, const ImportOptions& options) {
 }
 
 } // namespace hlod
+
+HLOD_MODULE_ENTRY(hlod::AssimpModule, assimp, &hlod::importAssimpHere)

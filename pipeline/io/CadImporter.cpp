@@ -44,11 +44,13 @@
 #include <XCAFDoc_DocumentTool.hxx>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/core/OnDemand.h"
 #include "pipeline/io/CadCrashGuard.h"
 #include "pipeline/io/CadProgress.h"
 #include "pipeline/io/CadTessellation.h"
 #include "pipeline/io/CadXcaf.h"
 #include "pipeline/io/Import.h"
+#include "pipeline/io/ImportModules.h"
 #include "pipeline/io/StepInstancing.h"
 
 namespace hlod {
@@ -315,7 +317,7 @@ void checkOptions(const fs::path& file, const ImportOptions& options) {
 
 } // namespace
 
-Scene importCad(const fs::path& file, const ImportOptions& options, const Progress& progress) {
+Scene importCadHere(const fs::path& file, const ImportOptions& options, const Progress& progress) {
     checkOptions(file, options);
     silenceOcct();
     const CadKind kind = kindOf(file);
@@ -341,3 +343,5 @@ Scene importCad(const fs::path& file, const ImportOptions& options, const Progre
 }
 
 } // namespace hlod
+
+HLOD_MODULE_ENTRY(hlod::CadModule, cad, &hlod::importCadHere)

@@ -11,6 +11,8 @@
 #include <set>
 
 #include "pipeline/core/Error.h"
+#include "pipeline/core/OnDemand.h"
+#include "pipeline/io/ImportModules.h"
 #include "pipeline/io/IsolatedImport.h"
 
 namespace hlod {
@@ -89,6 +91,15 @@ Scene importOne(const fs::path& file, const ImportOptions& options, const Progre
 }
 
 } // namespace
+
+Scene importCad(const fs::path& file, const ImportOptions& options, const Progress& progress) {
+    return HLOD_ON_DEMAND(CadModule, cad, "STEP/IGES/BREP import (OpenCASCADE)")
+        .importCad(file, options, progress);
+}
+
+Scene importAssimp(const fs::path& file, const ImportOptions& options) {
+    return HLOD_ON_DEMAND(AssimpModule, assimp, "assimp import").importAssimp(file, options);
+}
 
 std::vector<fs::path> expandInputs(const std::vector<fs::path>& inputs) {
     std::vector<fs::path> files;

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <deque>
+#include <limits>
 #include <memory>
 
 #include <tbb/info.h>
@@ -36,6 +38,13 @@ namespace {
 
 // Bumped whenever a change of the proxy code changes its output, so stale caches miss.
 constexpr std::uint64_t kBakeFormatVersion = 13;
+
+// Input triangles of the bakes in flight together when BakeParams::boundWorkingSets
+// (BakeRun::inFlightCap): a share of the triangles the run bakes, so that a farm shard's working
+// sets shrink with its slice (engine tiled 100x, shard of 0.98 M triangles alone: 198 -> 185 MB
+// peak, same wall time), and at least BakeParams::inFlightFloor, so that a small shard's bakes
+// stay parallel.
+constexpr std::size_t kInFlightShare = 16;
 
 // CPU time of the calling thread (a node's measured cost, NodeBake::cpuSeconds).
 double threadCpuSeconds() {
@@ -283,6 +292,15 @@ struct BakeRun {
     std::unordered_map<std::uint64_t, std::shared_future<ProxyMesh>> copiesByKey;
     std::atomic<std::size_t> done{0}, baked{0}, reused{0}, dissolved{0}, triangles{0}, damaged{0};
     tbb::task_group group;
+    // Bakes in flight: a node is made while the input triangles of the nodes being made stay
+    // within inFlightCap, or alone; otherwise it waits in `deferred` until a bake finishes. A
+    // bake's working set grows with its input (the certified simplifier's grids and arrays:
+    // 85 MB for a node of 134 k input triangles), so large nodes made at once raised a farm
+    // shard's peak by a fifth for a few seconds (docs/benchmarks.md); in a shard the cap keeps
+    // their sum to a share of its triangles, whatever the thread count (unbounded elsewhere).
+    // Same output: the schedule never changes a proxy.
+    std::size_t inFlightCap = 0, inFlight = 0, peakInFlight = 0;
+    std::deque<std::pair<Id, std::size_t>> deferred; // node, its input triangles
     TextureMips mips;                 // source texture pyramids, shared by every node's atlas
     std::vector<ProxyLookSums> looks; // per node, over its originals (ProxyLook.h)
 
@@ -434,13 +452,48 @@ struct BakeRun {
         }
     }
 
-    void bakeNode(Id id) {
+    // Whether node `id` with `weight` input triangles may be made now (counted in flight);
+    // otherwise it is deferred and started by release().
+    bool admit(Id id, std::size_t weight) {
+        const std::lock_guard lock(bakedMutex);
+        if (inFlight != 0 && inFlight + weight > inFlightCap) {
+            deferred.emplace_back(id, weight);
+            return false;
+        }
+        inFlight += weight;
+        peakInFlight = std::max(peakInFlight, inFlight);
+        return true;
+    }
+
+    // A bake of `weight` input triangles finished: starts the deferred nodes that now fit.
+    void release(std::size_t weight) {
+        const std::lock_guard lock(bakedMutex);
+        inFlight -= weight;
+        while (!deferred.empty() &&
+               (inFlight == 0 || inFlight + deferred.front().second <= inFlightCap)) {
+            const auto [id, w] = deferred.front();
+            deferred.pop_front();
+            inFlight += w;
+            peakInFlight = std::max(peakInFlight, inFlight);
+            group.run([this, id = id] { bakeNode(id, true); });
+        }
+    }
+
+    struct InFlight {
+        BakeRun& run;
+        std::size_t weight;
+        ~InFlight() { run.release(weight); }
+    };
+
+    void bakeNode(Id id, bool admitted = false) {
         progress.throwIfCancelled();
         const double cpuStart = threadCpuSeconds();
         NodeBake& nb = result.nodes[id];
         std::vector<Id> inputs = inputsOf(id);
         const std::vector<AggregatePart> parts = partsOf(id, inputs);
         nb.inputTriangles = aggregateTriangleCount(scene, parts);
+        if (!admitted && !admit(id, nb.inputTriangles)) return;
+        const InFlight slot{*this, nb.inputTriangles};
         const glm::dvec3 origin = nb.proxy.origin;
         std::shared_ptr<std::promise<ProxyMesh>> owner;
         try {
@@ -473,16 +526,17 @@ struct BakeRun {
             if (!nb.reused) nb.cpuSeconds = threadCpuSeconds() - cpuStart;
             applyProxyLook(nb.proxy, looks[id]); // not cached: derived from the originals
             if (owner) owner->set_value(nb.proxy);
-            // A proxy that did not pay is not drawn nor baked from (its parent reads its
-            // inputs): stored above, it need not stay in memory, nor this run's copy of it
-            // when the disk cache holds it (a rigid copy of this node reads it from there).
-            if (nb.dissolved || !nb.hasProxy) {
-                nb.proxy = ProxyMesh{origin, {}, {}, {}, {}};
-                if (owner && cache.enabled()) {
-                    const std::lock_guard lock(bakedMutex);
-                    bakedByKey.erase(nb.key);
-                }
+            // With the disk cache on, this run's copy of the proxy goes once stored: a later
+            // node with the same key (a rigid copy of this one) reads it from the cache, as a
+            // second run would (a farm shard: 6 MB less at its peak). Nodes already waiting
+            // hold their own copy of the future.
+            if (owner && cache.enabled()) {
+                const std::lock_guard lock(bakedMutex);
+                bakedByKey.erase(nb.key);
             }
+            // A proxy that did not pay is not drawn nor baked from (its parent reads its
+            // inputs): stored above, it need not stay in memory.
+            if (nb.dissolved || !nb.hasProxy) nb.proxy = ProxyMesh{origin, {}, {}, {}, {}};
         } catch (...) {
             if (owner) owner->set_exception(std::current_exception());
             throw;
@@ -543,6 +597,20 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
     run.looks =
         subtreeLookSums(scene, tree, order, below ? below->looks : std::vector<ProxyLookSums>{});
     if (below) run.standIns = below->standIns;
+    run.inFlightCap = std::numeric_limits<std::size_t>::max();
+    if (params.boundWorkingSets) {
+        // A sixteenth of the triangles below the roots, at least the floor.
+        std::vector<Id> leaves;
+        for (Id r : roots)
+            leavesBelow(tree, r, leaves);
+        std::size_t belowRoots = 0;
+        for (Id leaf : leaves) {
+            AggregatePart part;
+            part.instance = tree.nodes[leaf].instance;
+            belowRoots += aggregateTriangleCount(scene, std::span(&part, 1));
+        }
+        run.inFlightCap = std::max(belowRoots / kInFlightShare, params.inFlightFloor);
+    }
     run.standIns.resize(tree.nodes.size());
     std::vector<Id> ready;
     for (Id id : order) {
@@ -567,6 +635,7 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
     result.reused = run.reused.load();
     result.dissolved = run.dissolved.load();
     result.damaged = run.damaged.load();
+    result.peakInFlightTriangles = run.peakInFlight;
     for (Id id : order) {
         NodeBake& nb = result.nodes[id];
         if (tree.nodes[id].isLeaf()) continue;

@@ -73,6 +73,12 @@ struct BakeParams {
     // Base-colour atlases of kept proxies (AtlasStep.h); off: vertex colours only. Part of the
     // cache key when on.
     AtlasOptions atlas;
+    // Farm shards (BakePlan.h): the nodes being made at once take at most a sixteenth of the
+    // run's triangles together (a larger node is made alone), so that a shard's peak memory
+    // follows its slice; other builds make as many at once as there are threads. Never changes
+    // a proxy; not part of the cache key.
+    bool boundWorkingSets = false;
+    std::size_t inFlightFloor = 32768; // the bound never goes below this many input triangles
 };
 
 struct NodeBake {
@@ -104,6 +110,8 @@ struct BakeResult {
     std::size_t proxyVertices = 0;
     double seconds = 0.0;
     double cpuSeconds = 0.0; // CPU time of the whole process during the bake (all threads)
+    // The most input triangles of nodes being made at once (BakeParams::boundWorkingSets).
+    std::size_t peakInFlightTriangles = 0;
 };
 
 // Bakes every inner node of `tree` and makes the economy's decisions; result.nodes is parallel

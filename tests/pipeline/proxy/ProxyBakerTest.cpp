@@ -116,6 +116,29 @@ TEST(ProxyBaker, OutputIsBitIdenticalForAnyThreadCount) {
     }
 }
 
+TEST(ProxyBaker, BoundedWorkingSetsMakeLargeNodesAloneWithTheSameProxies) {
+    // 6 groups of 4,672 input triangles (28,032 below the root): a sixteenth is 1,752, so with
+    // the floor lowered every node is made alone; the proxies are those of an unbounded bake.
+    Fixture f(6);
+    BakeParams params;
+    params.threads = 2;
+    const BakeResult free = bakeProxies(f.scene, f.tree, params);
+    params.boundWorkingSets = true;
+    params.inFlightFloor = 1;
+    const BakeResult bounded = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(proxyBytes(free), proxyBytes(bounded));
+    std::size_t largest = 0;
+    for (const NodeBake& n : bounded.nodes)
+        largest = std::max(largest, n.inputTriangles);
+    EXPECT_EQ(bounded.peakInFlightTriangles, largest);
+    // A floor above the whole run leaves the bake unbounded: the six groups may go together.
+    params.inFlightFloor = 1u << 20;
+    const BakeResult roomy = bakeProxies(f.scene, f.tree, params);
+    EXPECT_EQ(proxyBytes(free), proxyBytes(roomy));
+    EXPECT_GE(roomy.peakInFlightTriangles, largest);
+    EXPECT_LE(roomy.peakInFlightTriangles, 2u * 4672u); // two threads
+}
+
 TEST(ProxyBaker, RerunReusesEveryProxyAndMatchesTheBakedBytes) {
     Fixture f;
     test::TempDir dir;
