@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <pthread.h>
 #include <vector>
 
 #include "pipeline/core/Error.h"
@@ -31,12 +32,20 @@ std::vector<fs::path> moduleFolders() {
     return out;
 }
 
+std::mutex loadMutex;
+
+// The importers load their module in a forked child (IsolatedImport.h): a fork while another
+// thread is loading a module would leave the child with the lock held. fork() waits for it.
+[[maybe_unused]] const int kForkSafe = [] {
+    return ::pthread_atfork([] { loadMutex.lock(); }, [] { loadMutex.unlock(); },
+                            [] { loadMutex.unlock(); });
+}();
+
 } // namespace
 
 const void* onDemandModule(const std::string& name, const std::string& purpose) {
-    static std::mutex mutex;
     static std::map<std::string, const void*> loaded;
-    const std::lock_guard lock(mutex);
+    const std::lock_guard lock(loadMutex);
     if (auto it = loaded.find(name); it != loaded.end()) return it->second;
     const std::string file = "libhlod-" + name + ".so";
     std::string tried;
