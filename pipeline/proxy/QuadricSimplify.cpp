@@ -80,17 +80,18 @@ public:
         : input_(positions), pos_(start.positions.begin(), start.positions.end()),
           tris_(start.indices.begin(), start.indices.end()), quadrics_(positions.size()),
           rep_(start.representative.begin(), start.representative.end()), bounded_(true) {
-        std::vector<Quadric> ownQuadrics(positions.size());
-        addQuadrics(positions, indices, ownQuadrics);
-        for (std::uint32_t v = 0; v < ownQuadrics.size(); ++v)
-            quadrics_[rep_[v]].add(ownQuadrics[v]);
+        {
+            // Freed before the grids below are built (88 bytes per input vertex at the bake's
+            // peak otherwise).
+            std::vector<Quadric> ownQuadrics(positions.size());
+            addQuadrics(positions, indices, ownQuadrics);
+            for (std::uint32_t v = 0; v < ownQuadrics.size(); ++v)
+                quadrics_[rep_[v]].add(ownQuadrics[v]);
+        }
         buildAdjacency();
         buildEdges();
         limit_ = static_cast<float>(deviationLimit);
         limit2_ = limit_ * limit_;
-        original_.reset(positions, indices, limit_ * (1.0f - surface::kSlackFraction));
-        coverage_ =
-            std::make_unique<surface::Coverage>(original_, limit_ * surface::kSlackFraction);
         // A vertex still at its input position lies on the input triangles it is a corner of;
         // a moved one is located when first needed.
         nearOf_.assign(positions.size(), surface::kNoTriangle);
@@ -99,27 +100,33 @@ public:
             if (nearOf_[v] == surface::kNoTriangle && pos_[v] == positions[v])
                 nearOf_[v] = static_cast<std::uint32_t>(i / 3);
         }
-        // The input's samples, each owned by a face of the start within the limit of it (the
-        // start lies within the limit both ways; one the search misses stays unowned and the
-        // final check (BoundedSimplify.h) puts its input triangle back if it must).
-        owned_.assign(tris_.size() / 3, {});
-        surface::NearSurface current;
-        current.reset(pos_, tris_, limit_);
-        auto own = [&](const glm::vec3& at) {
-            if (!current.near(at)) return;
-            owned_[current.lastFound()].push_back(static_cast<std::uint32_t>(samples_.size()));
-            samples_.push_back(at);
-        };
-        std::vector<std::uint8_t> seen(positions.size(), 0);
-        for (std::size_t t = 0; t < indices.size() / 3; ++t) {
-            const std::uint32_t* c = &indices[3 * t];
-            for (int k = 0; k < 3; ++k) {
-                if (seen[c[k]]) continue;
-                seen[c[k]] = 1;
-                own(positions[c[k]]);
+        {
+            // The input's samples, each owned by a face of the start within the limit of it
+            // (the start lies within the limit both ways; one the search misses stays unowned
+            // and the final check (BoundedSimplify.h) puts its input triangle back if it must).
+            // The start's grid is gone before the input's is built: they never coexist.
+            owned_.assign(tris_.size() / 3, {});
+            surface::NearSurface current;
+            current.reset(pos_, tris_, limit_);
+            auto own = [&](const glm::vec3& at) {
+                if (!current.near(at)) return;
+                owned_[current.lastFound()].push_back(static_cast<std::uint32_t>(samples_.size()));
+                samples_.push_back(at);
+            };
+            std::vector<std::uint8_t> seen(positions.size(), 0);
+            for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+                const std::uint32_t* c = &indices[3 * t];
+                for (int k = 0; k < 3; ++k) {
+                    if (seen[c[k]]) continue;
+                    seen[c[k]] = 1;
+                    own(positions[c[k]]);
+                }
+                forEachSample(positions[c[0]], positions[c[1]], positions[c[2]], own);
             }
-            forEachSample(positions[c[0]], positions[c[1]], positions[c[2]], own);
         }
+        original_.reset(positions, indices, limit_ * (1.0f - surface::kSlackFraction));
+        coverage_ =
+            std::make_unique<surface::Coverage>(original_, limit_ * surface::kSlackFraction);
     }
 
     void run(double maxError) {
