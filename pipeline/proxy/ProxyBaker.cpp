@@ -295,7 +295,7 @@ struct BakeRun {
     // Bakes in flight: a node is made while the input triangles of the nodes being made stay
     // within inFlightCap, or alone; otherwise it waits in `deferred` until a bake finishes. A
     // bake's working set grows with its input (the certified simplifier's grids and arrays:
-    // 85 MB for a node of 134 k input triangles), so large nodes made at once raised a farm
+    // tens of MB for a node of 100 k input triangles), so large nodes made at once raised a farm
     // shard's peak by a fifth for a few seconds (docs/benchmarks.md); in a shard the cap keeps
     // their sum to a share of its triangles, whatever the thread count (unbounded elsewhere).
     // Same output: the schedule never changes a proxy.
