@@ -24,6 +24,7 @@
 #include "Commands.h"
 #include "ProgressBar.h"
 #include "pipeline/core/Error.h"
+#include "pipeline/core/OnDemand.h"
 
 #ifdef HLOD_HAVE_VTK
 #include "bench/BenchRun.h"
@@ -75,15 +76,11 @@ void parseSize(const std::string& text, int& w, int& h) {
 #ifndef HLOD_HAVE_VTK
 namespace {
 
-// hlod-bench, the build of this CLI with the VTK renderer (app/CMakeLists.txt): next to this
-// program (the build tree) or in ../lib/hlod-studio (installed); empty when there is none.
+// hlod-bench, the build of this CLI with the VTK renderer (app/CMakeLists.txt), where the
+// modules are (OnDemand.h programFolders); empty when there is none.
 std::filesystem::path benchProgram() {
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec) return {};
-    for (const std::filesystem::path& p :
-         {self.parent_path() / "hlod-bench",
-          self.parent_path().parent_path() / "lib" / "hlod-studio" / "hlod-bench"}) {
+    for (const std::filesystem::path& folder : programFolders()) {
+        const std::filesystem::path p = folder / "hlod-bench";
         if (::access(p.c_str(), X_OK) == 0) return p;
     }
     return {};

@@ -50,6 +50,18 @@ std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& ro
     return order;
 }
 
+std::vector<std::uint64_t> subtreeTriangles(const ClusterTree& tree, const Scene& scene) {
+    std::vector<std::uint64_t> tris(tree.nodes.size(), 0);
+    if (tree.root == kNoId) return tris;
+    for (Id id : childrenFirst(tree, {tree.root})) { // every child complete before its parent
+        const ClusterNode& node = tree.nodes[id];
+        if (node.isLeaf() && node.instance < scene.instances.size())
+            tris[id] = scene.meshes[scene.instances[node.instance].mesh].triangleCount();
+        if (node.parent != kNoId) tris[node.parent] += tris[id];
+    }
+    return tris;
+}
+
 void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out) {
     if (tree.nodes[id].isLeaf()) {
         out.push_back(id);

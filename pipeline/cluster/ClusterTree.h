@@ -58,4 +58,8 @@ std::vector<Id> childrenFirst(const ClusterTree& tree, const std::vector<Id>& ro
 // Appends the leaves below node `id` (itself when it is a leaf) to `out`, in child order.
 void leavesBelow(const ClusterTree& tree, Id id, std::vector<Id>& out);
 
+// Original triangles below every node (instanced: a mesh placed twice counts twice), the sum
+// over the leaves of the subtree (a leaf whose instance `scene` lacks counts 0).
+std::vector<std::uint64_t> subtreeTriangles(const ClusterTree& tree, const Scene& scene);
+
 } // namespace hlod

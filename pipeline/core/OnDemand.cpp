@@ -18,14 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 std::vector<fs::path> moduleFolders() {
-    std::vector<fs::path> out;
     if (const char* dir = std::getenv("HLOD_MODULE_DIR"); dir && *dir) return {fs::path(dir)};
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        out.push_back(self.parent_path());
-        out.push_back(self.parent_path().parent_path() / "lib" / "hlod-studio");
-    }
+    std::vector<fs::path> out = programFolders();
 #ifdef HLOD_BUILD_MODULE_DIR
     out.emplace_back(HLOD_BUILD_MODULE_DIR);
 #endif
@@ -42,6 +36,13 @@ std::mutex loadMutex;
 }();
 
 } // namespace
+
+std::vector<fs::path> programFolders() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    return {self.parent_path(), self.parent_path().parent_path() / "lib" / "hlod-studio"};
+}
 
 const void* onDemandModule(const std::string& name, const std::string& purpose) {
     static std::map<std::string, const void*> loaded;

@@ -19,13 +19,19 @@
 // program instead and call it directly.
 #pragma once
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace hlod {
 
 // The module table of libhlod-NAME.so (its hlod_module_NAME()); throws hlod::Error naming the
 // module file, what it is for and the loader's message when it cannot be loaded.
 const void* onDemandModule(const std::string& name, const std::string& purpose);
+
+// Where the running program's companions are: its own folder and ../lib/hlod-studio next to it
+// (the installed layout), in that order; empty when /proc/self/exe cannot be read.
+std::vector<std::filesystem::path> programFolders();
 
 } // namespace hlod
 

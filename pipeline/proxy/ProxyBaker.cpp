@@ -600,15 +600,10 @@ BakeResult bakeFrom(const Scene& scene, const ClusterTree& tree, const std::vect
     run.inFlightCap = std::numeric_limits<std::size_t>::max();
     if (params.boundWorkingSets) {
         // A sixteenth of the triangles below the roots, at least the floor.
-        std::vector<Id> leaves;
-        for (Id r : roots)
-            leavesBelow(tree, r, leaves);
+        const std::vector<std::uint64_t> below = subtreeTriangles(tree, scene);
         std::size_t belowRoots = 0;
-        for (Id leaf : leaves) {
-            AggregatePart part;
-            part.instance = tree.nodes[leaf].instance;
-            belowRoots += aggregateTriangleCount(scene, std::span(&part, 1));
-        }
+        for (Id r : roots)
+            belowRoots += below[r];
         run.inFlightCap = std::max(belowRoots / kInFlightShare, params.inFlightFloor);
     }
     run.standIns.resize(tree.nodes.size());

@@ -97,18 +97,4 @@ bool isInSubtree(const ClusterTree& tree, Id node, Id ancestor) {
     return false;
 }
 
-std::vector<std::uint64_t> subtreeTriangles(const ClusterTree& tree, const Scene& scene) {
-    std::vector<std::uint64_t> tris(tree.nodes.size(), 0);
-    const std::vector<Id> order = preorder(tree);
-    // Children after parents in preorder: walking it backwards adds every child to its parent
-    // after the child itself is complete.
-    for (auto it = order.rbegin(); it != order.rend(); ++it) {
-        const ClusterNode& node = tree.nodes[*it];
-        if (node.isLeaf() && node.instance < scene.instances.size())
-            tris[*it] = scene.meshes[scene.instances[node.instance].mesh].triangleCount();
-        if (node.parent != kNoId) tris[node.parent] += tris[*it];
-    }
-    return tris;
-}
-
 } // namespace hlod

@@ -39,8 +39,4 @@ Id leafOfInstance(const ClusterTree& tree, Id instance);
 // True when `node` is `ancestor` or lies below it.
 bool isInSubtree(const ClusterTree& tree, Id node, Id ancestor);
 
-// Original triangles below every node (instanced: a mesh placed twice counts twice), the sum
-// over the leaves of the subtree.
-std::vector<std::uint64_t> subtreeTriangles(const ClusterTree& tree, const Scene& scene);
-
 } // namespace hlod
