@@ -338,7 +338,7 @@ private:
         const CollapseRing ring{pos_, bound_,   c.from,
                                 c.to, c.fromAt, glm::length(glm::dvec3(c.fromAt) - p(c.from)),
                                 c.at, before_,  after_};
-        const double need = collapseBound(ring, mapping_);
+        const double need = collapseBound(ring, mapping_, limit_);
         if (!(need <= limit_)) return false;
         // Stored rounded up, so the float never understates it.
         float stored = static_cast<float>(need);

@@ -9,9 +9,9 @@
 // one mesh is shown to lie within the limit of the other mesh's surface: the distance to one
 // triangle is a convex function, so a triangle whose three corners lie within the limit of
 // the same triangle T lies within it entirely. A triangle whose corners have no such common T
-// has its longest edge bisected and both halves are certified the same way, down to pieces
-// whose longest edge is 1/32 of the limit (queries run at 31/32 of the limit, so such a piece
-// is within the limit wherever its corners are). Metro (Cignoni et al. 1998) samples points;
+// has an edge bisected (SurfaceQuery.h) and both halves are certified the same way, down to
+// pieces whose longest edge is 1/32 of the limit (queries run at 31/32 of the limit, so such a
+// piece is within the limit wherever its corners are). Metro (Cignoni et al. 1998) samples points;
 // corners, midpoints and centroids alone missed the middle of long triangles (a 50 m strip of
 // track spanning a bend). A triangle that needs more than 2^14 pieces counts as a violation
 // (conservative).

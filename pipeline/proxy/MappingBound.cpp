@@ -34,7 +34,7 @@ bool facesDirection(double area3, double projected, bool allowDegenerate) {
 
 } // namespace
 
-double collapseBound(const CollapseRing& ring, MappingScratch& s) {
+double collapseBound(const CollapseRing& ring, MappingScratch& s, double giveUp) {
     s.ids.clear();
     s.beforeLocal.clear();
     s.afterLocal.clear();
@@ -115,10 +115,11 @@ double collapseBound(const CollapseRing& ring, MappingScratch& s) {
     };
     double need = 0.0;
     // `weightNew` of the new vertex at a point where the rest of the bound after is `fixed`.
+    // False when the collapse cannot be certified (or needs more than giveUp).
     auto require = [&](double required, double weightNew, double fixed) {
         if (weightNew > 1e-9) {
             need = std::max(need, (required - fixed) / weightNew);
-            return true;
+            return !(need > giveUp);
         }
         return !(required > fixed + 1e-9 * (required + fixed)); // on the link: cannot grow
     };
@@ -133,7 +134,7 @@ double collapseBound(const CollapseRing& ring, MappingScratch& s) {
         if (la < -1e-9 || lb < -1e-9 || lc < -1e-9) continue;
         const double before = la * bound(f[0]) + lb * bound(f[1]) + lc * bound(f[2]);
         const double h = la * a.z + lb * b.z + lc * c.z;
-        require(before + std::abs(h - q.z), 1.0, 0.0);
+        if (!require(before + std::abs(h - q.z), 1.0, 0.0)) return INFINITY;
         found = true;
     }
     if (!found) return INFINITY;

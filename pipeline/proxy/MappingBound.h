@@ -29,6 +29,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -65,7 +66,9 @@ struct MappingScratch {
 };
 
 // The least bound the new vertex needs (metres), or infinity when the collapse cannot be
-// certified (see header).
-double collapseBound(const CollapseRing& ring, MappingScratch& scratch);
+// certified (see header). Infinity as well as soon as the bound is known to exceed `giveUp`
+// (callers that only compare it with a limit pass the limit: most collapses tried fail, and
+// most of those show it at the first corners).
+double collapseBound(const CollapseRing& ring, MappingScratch& scratch, double giveUp = INFINITY);
 
 } // namespace hlod

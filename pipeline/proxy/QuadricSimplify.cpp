@@ -110,8 +110,7 @@ public:
             current.reset(pos_, tris_, limit_);
             auto own = [&](const glm::vec3& at) {
                 if (!current.near(at)) return;
-                owned_[current.lastFound()].push_back(static_cast<std::uint32_t>(samples_.size()));
-                samples_.push_back(at);
+                owned_[current.lastFound()].push_back(at);
             };
             std::vector<std::uint8_t> seen(positions.size(), 0);
             for (std::size_t t = 0; t < indices.size() / 3; ++t) {
@@ -476,8 +475,8 @@ private:
             for (std::uint32_t end : {c.from, c.to})
                 for (std::uint32_t t : trianglesOf(end))
                     owned_[t].clear();
-            for (const auto& [sample, t] : moves_)
-                owned_[t].push_back(sample);
+            for (std::size_t j = 0; j < pending_.size(); ++j) // where staysWithinLimit put them
+                owned_[ringSlot_[placedIn_[j]]].push_back(pending_[j]);
         }
     }
 
@@ -539,7 +538,7 @@ private:
             const std::uint32_t n = std::min<std::uint32_t>(4, last - j);
             surface::Points4 block;
             for (std::uint32_t k = 0; k < 4; ++k) {
-                const glm::vec3& q = samples_[pending_[j + std::min(k, n - 1)]];
+                const glm::vec3& q = pending_[j + std::min(k, n - 1)];
                 block.x[k] = q.x, block.y[k] = q.y, block.z[k] = q.z;
             }
             const unsigned inside = surface::withinMask4(face, block, limit2_);
@@ -552,15 +551,13 @@ private:
         }
     }
 
-    void addSample(const glm::vec3& at, std::size_t t) {
-        owned_[t].push_back(static_cast<std::uint32_t>(samples_.size()));
-        samples_.push_back(at);
-    }
+    void addSample(const glm::vec3& at, std::size_t t) { owned_[t].push_back(at); }
 
     // Bounded mode: whether the mesh stays within the limit of the input both ways after the
     // collapse. The reshaped faces must lie within the limit of the input surface (certified,
     // SurfaceQuery.h Coverage), and every sample owned by a face around either end must lie
-    // within the limit of a reshaped face afterwards; moves_ records where each sample goes.
+    // within the limit of a reshaped face afterwards; pending_ and placedIn_ say where each sample
+    // goes.
     bool staysWithinLimit(const Candidate& c) {
         ring_.clear();
         ringSlot_.clear();
@@ -611,7 +608,7 @@ private:
                 const std::size_t n = std::min<std::size_t>(4, unplaced_.size() - j);
                 surface::Points4 block;
                 for (std::size_t k = 0; k < 4; ++k) {
-                    const glm::vec3& q = samples_[pending_[unplaced_[j + std::min(k, n - 1)]]];
+                    const glm::vec3& q = pending_[unplaced_[j + std::min(k, n - 1)]];
                     block.x[k] = q.x, block.y[k] = q.y, block.z[k] = q.z;
                 }
                 const unsigned inside = surface::withinMask4(ring_[i], block, limit2_);
@@ -626,9 +623,6 @@ private:
             unplaced_.resize(kept);
         }
         if (!unplaced_.empty()) return false;
-        moves_.clear();
-        for (std::size_t j = 0; j < pending_.size(); ++j)
-            moves_.emplace_back(pending_[j], ringSlot_[placedIn_[j]]);
         // The reshaped faces within the limit of the input, certified (SurfaceQuery.h
         // Coverage): every face the result holds was either left as it was in the input or
         // certified when it took its last shape. Corners that did not move keep the input
@@ -669,17 +663,20 @@ private:
     float limit_ = 0.0f, limit2_ = 0.0f;
     surface::NearSurface original_;
     std::unique_ptr<surface::Coverage> coverage_;
-    std::vector<glm::vec3> samples_;
-    std::vector<std::vector<std::uint32_t>> owned_; // per triangle slot: its samples
+    // Per triangle slot: the input's sample points it holds (kept with it, so a collapse reads
+    // its faces' samples in a row).
+    std::vector<std::vector<glm::vec3>> owned_;
     std::vector<surface::Triangle> ring_;
     std::vector<std::uint32_t> ringSlot_, ringCorners_;
     // Per vertex: an input triangle within the limit of its current position (kNoTriangle:
     // not known yet); atNear_ the one found for the moving vertex's new position.
     std::vector<std::uint32_t> nearOf_;
     std::uint32_t atNear_ = surface::kNoTriangle;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> moves_; // (sample, slot)
-    std::vector<std::uint32_t> pending_, placedIn_, unplaced_;   // scratch of staysWithinLimit
-    std::uint32_t stamp_ = 0;                                    // collapses made so far
+    // Scratch of staysWithinLimit, read by collapse(): the samples of the faces around both
+    // ends, and per sample the ring face it goes to.
+    std::vector<glm::vec3> pending_;
+    std::vector<std::uint32_t> placedIn_, unplaced_;
+    std::uint32_t stamp_ = 0;            // collapses made so far
     std::vector<std::uint32_t> changed_; // per vertex: stamp of its last change
     std::unordered_map<std::uint64_t, std::uint32_t> failed_; // collapse -> stamp it failed at
 };

@@ -6,7 +6,8 @@
 // triangles rejected first by their plane and edge planes (lower bounds of the distance).
 // Coverage certifies a whole triangle lies within the limit of the surface: by convexity of
 // the distance to one triangle (three corners within the limit of the same triangle), by the
-// 1-Lipschitz distance (within d(centroid) + circumradius), else by bisecting its longest edge.
+// 1-Lipschitz distance (within d(centroid) + circumradius), else by bisecting an edge (the
+// longest whose ends share no such triangle).
 // Speed without changing an answer: the grid keeps each filed triangle's plane by component,
 // so a query rejects four candidates per step, and withinMask4 tests four points against one
 // triangle; both run the scalar tests' float operations in the same order (SSE2, no
@@ -572,8 +573,8 @@ private:
 
 // Certifies that the whole triangle abc lies within the surface's limit (plus `slack`):
 // by convexity of the distance to one triangle, abc is within the limit of a triangle T when
-// its three corners are, so a triangle whose corners share such a T is done; otherwise its
-// longest edge is bisected and both halves are certified. A piece whose longest edge is at
+// its three corners are, so a triangle whose corners share such a T is done; otherwise an edge
+// is bisected (see piece()) and both halves are certified. A piece whose longest edge is at
 // most `slack` is accepted once its corners are near the surface (every point of it is within
 // slack of a corner). `hints` are triangles to try first. Returns false with `failAt` set when
 // a corner is far from the surface, or when the piece budget runs out (conservative).
@@ -590,7 +591,7 @@ public:
         }
         budget_ = kPieceBudget;
         const Corner ca{a, kNoTriangle}, cb{b, kNoTriangle}, cc{c, kNoTriangle};
-        return piece(ca, cb, cc, 0, failAt);
+        return piece(ca, cb, cc, 0, failAt, Known{});
     }
 
     // The same, given for each corner a surface triangle within the limit of it (`near[k]`,
@@ -605,7 +606,7 @@ public:
             near[k] = corner[k].near;
         }
         budget_ = kPieceBudget;
-        return piece(corner[0], corner[1], corner[2], 0, failAt);
+        return piece(corner[0], corner[1], corner[2], 0, failAt, Known{});
     }
 
 private:
@@ -629,17 +630,36 @@ private:
         return true;
     }
 
-    bool piece(Corner a, Corner b, Corner c, int depth, glm::vec3& failAt) {
+    // What a piece knows of its corners' triangles from its parent (see piece()): bit j of
+    // asked[k] set when corner k's triangle was tested against corner j, bit j of within[k]
+    // the answer.
+    struct Known {
+        unsigned asked[3] = {0, 0, 0}, within[3] = {0, 0, 0};
+    };
+
+    bool piece(Corner a, Corner b, Corner c, int depth, glm::vec3& failAt, const Known& known) {
         Corner* corner[3] = {&a, &b, &c};
         for (int k = 0; k < 3; ++k)
             if (!locate(*corner[k], failAt)) return false;
-        // One corner's triangle within the limit of the other two: convexity.
+        // One corner's triangle within the limit of the other two: convexity. Bit j of
+        // within[k]: corner k's triangle lies within the limit of corner j (a row stops at
+        // its first miss; the split below asks for the rest as it needs them).
+        unsigned within[3], asked[3];
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t t = corner[k]->near;
-            if (surface_.nearTriangle(t, corner[(k + 1) % 3]->p) &&
-                surface_.nearTriangle(t, corner[(k + 2) % 3]->p))
-                return true;
+            within[k] = known.within[k] | 1u << k;
+            asked[k] = known.asked[k] | 1u << k;
         }
+        auto ask = [&](int k, int j) {
+            if (!(asked[k] >> j & 1u)) {
+                asked[k] |= 1u << j;
+                if (corner[k]->near == corner[j]->near ||
+                    surface_.nearTriangle(corner[k]->near, corner[j]->p))
+                    within[k] |= 1u << j;
+            }
+            return (within[k] >> j & 1u) != 0;
+        };
+        for (int k = 0; k < 3; ++k)
+            if (ask(k, (k + 1) % 3) && ask(k, (k + 2) % 3)) return true;
         // Distance to a surface is 1-Lipschitz: the piece lies within d(g) + r of it, r the
         // largest distance from its centroid g to a corner, d(g) at most the distance to any
         // one triangle (first the corners', then the nearest).
@@ -651,6 +671,9 @@ private:
             for (int k = 0; k < 3; ++k)
                 if (surface_.distanceTo(corner[k]->near, g) + r <= limit) return true;
             if (r < 0.5f * limit && surface_.distance(g) + r <= limit) return true;
+            // Some other triangle within the limit of all three corners: worth a search only
+            // for pieces within about the limit of one point (larger ones are cut instead:
+            // searching up to twice the limit cost the tiled engine 6 % more).
         }
         if (r < 2.0f * limit && surface_.nearAll(a.p, b.p, c.p)) return true;
         const float ab = glm::dot(b.p - a.p, b.p - a.p), bc = glm::dot(c.p - b.p, c.p - b.p),
@@ -661,18 +684,52 @@ private:
             failAt = g;
             return false;
         }
-        // Bisect the longest edge; the midpoint is located once for both halves.
-        Corner m{longest == ab   ? (a.p + b.p) * 0.5f
-                 : longest == bc ? (b.p + c.p) * 0.5f
-                                 : (c.p + a.p) * 0.5f,
+        // Bisect the longest edge whose ends share no triangle within the limit of both, if
+        // it is at least half as long as the longest edge (a piece over long thin surface
+        // triangles, the strips of a cylinder, is cut across them, not along; shorter edges
+        // would make slivers where the surface's triangles are small every way), else the
+        // longest edge (always from kSplitDepth on, so pieces shrink to the slack); the
+        // midpoint is located once for both halves.
+        const float len[3] = {ab, bc, ca}; // edge e joins corners e and e + 1
+        int split = longest == ab ? 0 : longest == bc ? 1 : 2;
+        if (depth < kSplitDepth) {
+            int best = -1;
+            for (int e = 0; e < 3; ++e) {
+                const int i = e, j = (e + 1) % 3;
+                const bool shared = ask(i, j) || ask(j, i);
+                if (!shared && len[e] * 4.0f >= longest && (best < 0 || len[e] > len[best]))
+                    best = e;
+            }
+            if (best >= 0) split = best;
+        }
+        Corner m{split == 0   ? (a.p + b.p) * 0.5f
+                 : split == 1 ? (b.p + c.p) * 0.5f
+                              : (c.p + a.p) * 0.5f,
                  kNoTriangle};
         if (!locate(m, failAt)) return false;
-        if (longest == ab)
-            return piece(a, m, c, depth + 1, failAt) && piece(m, b, c, depth + 1, failAt);
-        if (longest == bc)
-            return piece(a, b, m, depth + 1, failAt) && piece(a, m, c, depth + 1, failAt);
-        return piece(a, b, m, depth + 1, failAt) && piece(m, b, c, depth + 1, failAt);
+        // Each half keeps two corners of this piece, and what was asked about them.
+        auto keep = [&](int c0, int c1, int c2) { // this piece's corner per corner (-1: m)
+            const int from[3] = {c0, c1, c2};
+            Known k;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    if (i != j && from[i] >= 0 && from[j] >= 0) {
+                        k.asked[i] |= (asked[from[i]] >> from[j] & 1u) << j;
+                        k.within[i] |= (within[from[i]] >> from[j] & 1u) << j;
+                    }
+            return k;
+        };
+        if (split == 0)
+            return piece(a, m, c, depth + 1, failAt, keep(0, -1, 2)) &&
+                   piece(m, b, c, depth + 1, failAt, keep(-1, 1, 2));
+        if (split == 1)
+            return piece(a, b, m, depth + 1, failAt, keep(0, 1, -1)) &&
+                   piece(a, m, c, depth + 1, failAt, keep(0, -1, 2));
+        return piece(a, b, m, depth + 1, failAt, keep(0, 1, -1)) &&
+               piece(m, b, c, depth + 1, failAt, keep(-1, 1, 2));
     }
+
+    static constexpr int kSplitDepth = 24; // from here on the longest edge is bisected
 
     NearSurface& surface_;
     float slack2_;

@@ -120,6 +120,39 @@ Collapse ringOf(const Patch& p, std::uint32_t from, std::uint32_t to) {
     return c;
 }
 
+// The interior collapse of edge (12, 13) of jittered patch `seed`, the new vertex near the
+// edge's midpoint at a seeded random offset (ring() refers to the members).
+struct InteriorCollapse {
+    Patch p;
+    Collapse c;
+    glm::vec3 at;
+    CollapseRing ring() const {
+        return CollapseRing{p.positions, p.bounds, 12,       13,     p.positions[12],
+                            0.0,         at,       c.before, c.after};
+    }
+};
+
+InteriorCollapse interiorCollapse(std::uint32_t seed) {
+    InteriorCollapse out{patch(seed, false), {}, {}};
+    out.c = ringOf(out.p, 12, 13);
+    out.at =
+        0.5f * (out.p.positions[12] + out.p.positions[13]) +
+        0.2f * glm::vec3(hash01(seed) - 0.5f, hash01(seed + 7) - 0.5f, hash01(seed + 13) - 0.5f);
+    return out;
+}
+
+// Calls visit(collapse, ring, scratch, need, seed) for the interior collapses of seeds 1-300
+// that the certificate answers (need finite).
+template <class F> void forEachCertifiedInteriorCollapse(F&& visit) {
+    for (std::uint32_t seed = 1; seed <= 300; ++seed) {
+        const InteriorCollapse x = interiorCollapse(seed);
+        const CollapseRing ring = x.ring();
+        MappingScratch s;
+        const double need = collapseBound(ring, s);
+        if (std::isfinite(need)) visit(x, ring, s, need, seed);
+    }
+}
+
 } // namespace
 
 // Interior collapses of jittered patches with random placements of the new vertex and random
@@ -127,21 +160,12 @@ Collapse ringOf(const Patch& p, std::uint32_t from, std::uint32_t to) {
 // move at every one of 20000 points of the ring (up to rounding).
 TEST(MappingBound, BoundAfterCoversBoundBeforePlusTheMoveEverywhere) {
     int certified = 0;
-    for (std::uint32_t seed = 1; seed <= 300; ++seed) {
-        const Patch p = patch(seed, false);
-        const Collapse c = ringOf(p, 12, 13);
-        const glm::vec3 at = 0.5f * (p.positions[12] + p.positions[13]) +
-                             0.2f * glm::vec3(hash01(seed) - 0.5f, hash01(seed + 7) - 0.5f,
-                                              hash01(seed + 13) - 0.5f);
-        const CollapseRing ring{p.positions, p.bounds, 12,       13,     p.positions[12],
-                                0.0,         at,       c.before, c.after};
-        MappingScratch s;
-        const double need = collapseBound(ring, s);
-        if (!std::isfinite(need)) continue;
+    forEachCertifiedInteriorCollapse([&](const InteriorCollapse& x, const CollapseRing& ring,
+                                         MappingScratch& s, double need, std::uint32_t seed) {
         ++certified;
-        EXPECT_GE(need, p.bounds[12]); // the removed vertices' own bounds are covered
+        EXPECT_GE(need, x.p.bounds[12]); // the removed vertices' own bounds are covered
         EXPECT_LE(worstShortfall(ring, s, need, seed), 1e-9) << "seed " << seed;
-    }
+    });
     EXPECT_GT(certified, 250); // jitter of 0.3 on unit cells rarely folds a ring
 }
 
@@ -217,4 +241,24 @@ TEST(MappingBound, FoldedRingIsRefused) {
                             c.after};
     MappingScratch s;
     EXPECT_TRUE(std::isinf(collapseBound(ring, s)));
+}
+
+// Giving up past a limit changes no answer at or below it: the bound is the same when it is
+// within the limit, infinite when it is not (callers compare with the limit only).
+TEST(MappingBound, GivingUpPastALimitKeepsEveryBoundWithinIt) {
+    int within = 0, past = 0;
+    forEachCertifiedInteriorCollapse([&](const InteriorCollapse&, const CollapseRing& ring,
+                                         MappingScratch& s, double need, std::uint32_t seed) {
+        const double limit = 0.3 + 0.2 * hash01(seed + 21); // about half the bounds exceed it
+        const double gaveUp = collapseBound(ring, s, limit);
+        if (need <= limit) {
+            ++within;
+            EXPECT_EQ(gaveUp, need) << "seed " << seed;
+        } else {
+            ++past;
+            EXPECT_TRUE(std::isinf(gaveUp)) << "seed " << seed;
+        }
+    });
+    EXPECT_GT(within, 20);
+    EXPECT_GT(past, 20);
 }
