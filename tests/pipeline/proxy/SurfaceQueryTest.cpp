@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "pipeline/proxy/SurfaceQuery.h"
@@ -51,6 +52,18 @@ glm::vec3 pointNear(std::mt19937& rng, const Triangle& tri, float limit) {
     const glm::vec3 off = glm::vec3(side(rng), side(rng), side(rng)) * limit * 1.2f;
     return onPlane + off;
 }
+
+// A Coverage test at `limit` over a triangle list: queries at the limit less the slack, as the
+// simplifiers run them.
+struct CoverageAt {
+    NearSurface surface;
+    Coverage coverage;
+    CoverageAt(std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices,
+               float limit)
+        : coverage(surface, limit * kSlackFraction) {
+        surface.reset(positions, indices, limit * (1.0f - kSlackFraction));
+    }
+};
 
 } // namespace
 
@@ -180,9 +193,9 @@ TEST(SurfaceQuery, CoverageWithKnownCornersLocatesOnlyTheUnknownOnes) {
                                            {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
     const std::vector<std::uint32_t> indices{0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
     const float limit = 0.1f;
-    NearSurface surface;
-    surface.reset(positions, indices, limit * (1.0f - kSlackFraction));
-    Coverage coverage(surface, limit * kSlackFraction);
+    CoverageAt at(positions, indices, limit);
+    Coverage& coverage = at.coverage;
+    NearSurface& surface = at.surface;
     glm::vec3 failAt;
     // 5 cm above the strip, spanning both halves: covered. The first corner comes with a
     // triangle it lies above (kept as given); the others are located and written back, each
@@ -233,9 +246,8 @@ TEST(SurfaceQuery, CoverageOverLongStripsAgreesWithDenseSampling) {
         return best;
     };
     const float limit = 0.05f;
-    NearSurface surface;
-    surface.reset(positions, indices, limit * (1.0f - kSlackFraction));
-    Coverage coverage(surface, limit * kSlackFraction);
+    CoverageAt at(positions, indices, limit);
+    Coverage& coverage = at.coverage;
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> angle(0.05f, 3.09f), along(0.2f, 5.8f),
         lift(-0.04f, 0.08f), span(0.05f, 0.6f);
@@ -272,4 +284,35 @@ TEST(SurfaceQuery, CoverageOverLongStripsAgreesWithDenseSampling) {
     EXPECT_GT(certified, 40);     // 67 of the 300
     EXPECT_GT(clearlyWithin, 40); // 58
     EXPECT_LT(certified, 200);    // and most stray from the limit somewhere
+}
+
+// A face much wider than the limit over a surface of triangles about the limit's size (a
+// remeshed box's face over its voxel shell): its certificate must cut it into tens of
+// thousands of pieces, so its piece budget grows with its area instead of stopping at 2^14.
+TEST(SurfaceQuery, CoverageOfAWideFaceOverAFineSurfaceIsNotCutShort) {
+    // The unit square in z = 0 as 250 x 250 cells of two triangles (4 mm).
+    const int n = 250;
+    std::vector<glm::vec3> positions;
+    std::vector<std::uint32_t> indices;
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            positions.emplace_back(static_cast<float>(x) / n, static_cast<float>(y) / n, 0.0f);
+    for (std::uint32_t y = 0; y < static_cast<std::uint32_t>(n); ++y)
+        for (std::uint32_t x = 0; x < static_cast<std::uint32_t>(n); ++x) {
+            const std::uint32_t a = y * (n + 1) + x;
+            indices.insert(indices.end(), {a, a + 1, a + n + 2, a, a + n + 2, a + n + 1});
+        }
+    const float limit = 0.005f;
+    CoverageAt at(positions, indices, limit);
+    glm::vec3 failAt;
+    // Half the square, its far corner at `height`, the others 2 mm above the square.
+    auto halfSquare = [&](float height) {
+        const glm::vec3 corner[3] = {{0, 0, 0.002f}, {1, 0, 0.002f}, {1, 1, height}};
+        std::uint32_t near[3] = {kNoTriangle, kNoTriangle, kNoTriangle};
+        return at.coverage.covers(corner, near, failAt);
+    };
+    EXPECT_TRUE(halfSquare(0.002f)); // within the limit everywhere
+    // One corner 1 cm above: refused, at a point beyond the limit.
+    EXPECT_FALSE(halfSquare(0.01f));
+    EXPECT_GT(failAt.z, limit * (1.0f - kSlackFraction));
 }
