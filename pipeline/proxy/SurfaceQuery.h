@@ -31,8 +31,9 @@
 
 namespace hlod::surface {
 
-[[gnu::always_inline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a,
-                                                    const glm::vec3& b, const glm::vec3& c) {
+// The point of triangle abc closest to p.
+[[gnu::always_inline]] inline glm::vec3 closestPoint(const glm::vec3& p, const glm::vec3& a,
+                                                     const glm::vec3& b, const glm::vec3& c) {
     const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
     const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
     glm::vec3 q;
@@ -59,7 +60,12 @@ namespace hlod::surface {
             q = denom != 0.0f ? a + ab * (vb / denom) + ac * (vc / denom) : a;
         }
     }
-    const glm::vec3 d = p - q;
+    return q;
+}
+
+[[gnu::always_inline]] inline float distanceSquared(const glm::vec3& p, const glm::vec3& a,
+                                                    const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 d = p - closestPoint(p, a, b, c);
     return glm::dot(d, d);
 }
 

@@ -12,6 +12,7 @@
 
 #include "pipeline/core/OnDemand.h"
 #include "pipeline/proxy/ExteriorFill.h"
+#include "pipeline/proxy/SurfaceQuery.h"
 
 namespace hlod {
 
@@ -84,30 +85,6 @@ openvdb::FloatGrid::Ptr solidField(const openvdb::FloatGrid& distance, const Ext
     return phi;
 }
 
-// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
-glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
-                            const glm::vec3& c) {
-    const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
-    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0 && d2 <= 0) return a;
-    const glm::vec3 bp = p - b;
-    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return b;
-    const float vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const glm::vec3 cp = p - c;
-    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return c;
-    const float vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-    const float va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    const float denom = va + vb + vc;
-    return denom != 0.0f ? a + ab * (vb / denom) + ac * (vc / denom) : a;
-}
-
 // Iso-surface of phi at 0. Each vertex is pulled from the offset d back towards the closest
 // input triangle (OpenVDB's closest-polygon grid) until it is `keep` away from it, and takes
 // that triangle's colour: the shell hugs the visible surface again, and sheets keep a
@@ -130,8 +107,8 @@ ProxyMesh extractSurface(const openvdb::FloatGrid& phi, const openvdb::Int32Grid
         const openvdb::Int32 tri = acc.getValue(c);
         if (tri >= 0 && static_cast<std::size_t>(tri) < inputTriangles) {
             const std::uint32_t* t = &input.indices[static_cast<std::size_t>(tri) * 3];
-            const glm::vec3 q = closestOnTriangle(p, input.positions[t[0]], input.positions[t[1]],
-                                                  input.positions[t[2]]);
+            const glm::vec3 q = surface::closestPoint(p, input.positions[t[0]],
+                                                      input.positions[t[1]], input.positions[t[2]]);
             const float len = glm::length(p - q);
             if (len > keep) p = q + (p - q) * (keep / len);
             out.colors.push_back(input.colors[t[0]]);
