@@ -73,8 +73,14 @@ glm::vec4 sampleBilinear(const RgbaImage& image, glm::vec2 uv) {
     const float y = v * static_cast<float>(image.height) - 0.5f;
     const float fx = std::floor(x), fy = std::floor(y);
     const float tx = x - fx, ty = y - fy;
-    const int x0 = wrap(static_cast<int>(fx), image.width), x1 = wrap(x0 + 1, image.width);
-    const int y0 = wrap(static_cast<int>(fy), image.height), y1 = wrap(y0 + 1, image.height);
+    // fx lies in [-1, width - 1] here: the wrap's division only for what falls outside.
+    auto wrapped = [](int i, int n) {
+        return static_cast<unsigned>(i) < static_cast<unsigned>(n) ? i : wrap(i, n);
+    };
+    const int x0 = wrapped(static_cast<int>(fx), image.width),
+              x1 = x0 + 1 < image.width ? x0 + 1 : 0;
+    const int y0 = wrapped(static_cast<int>(fy), image.height),
+              y1 = y0 + 1 < image.height ? y0 + 1 : 0;
     const glm::vec4 top = glm::mix(linearTexel(image, x0, y0), linearTexel(image, x1, y0), tx);
     const glm::vec4 bottom = glm::mix(linearTexel(image, x0, y1), linearTexel(image, x1, y1), tx);
     return glm::mix(top, bottom, ty);

@@ -22,15 +22,26 @@ void spread(RgbaImage& image, std::vector<std::uint8_t> known, int first, int co
                     f(static_cast<std::size_t>(ny) * w + nx);
             }
     };
+    // The first frontier: unknown texels with a known texel in their 3 x 3 block, found from
+    // each row's vertical OR of three rows (no division per texel), in index order.
     std::vector<std::size_t> frontier;
     std::vector<std::uint8_t> queued(known.size(), 0);
-    for (std::size_t i = 0; i < known.size(); ++i) {
-        if (known[i]) continue;
-        bool next = false;
-        forNeighbours(i, [&](std::size_t j) { next = next || known[j]; });
-        if (next) {
-            frontier.push_back(i);
-            queued[i] = 1;
+    std::vector<std::uint8_t> column(static_cast<std::size_t>(w) + 2, 0);
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* row = &known[static_cast<std::size_t>(y) * w];
+        const std::uint8_t* above = y > 0 ? row - w : nullptr;
+        const std::uint8_t* below = y + 1 < h ? row + w : nullptr;
+        for (int x = 0; x < w; ++x)
+            column[static_cast<std::size_t>(x) + 1] =
+                static_cast<std::uint8_t>(row[x] | (above ? above[x] : 0) | (below ? below[x] : 0));
+        for (int x = 0; x < w; ++x) {
+            if (row[x]) continue;
+            const std::size_t c = static_cast<std::size_t>(x) + 1;
+            if (column[c - 1] | column[c] | column[c + 1]) {
+                const std::size_t i = static_cast<std::size_t>(y) * w + x;
+                frontier.push_back(i);
+                queued[i] = 1;
+            }
         }
     }
     std::vector<std::uint8_t> values;
@@ -75,11 +86,14 @@ void spread(RgbaImage& image, std::vector<std::uint8_t> known, int first, int co
             sum[c] += image.pixels[i * 4 + static_cast<std::size_t>(first + c)];
         ++n;
     }
+    std::uint8_t fill[4];
+    for (int c = 0; c < count; ++c)
+        fill[c] =
+            static_cast<std::uint8_t>(n > 0 ? (sum[c] + n / 2) / n : (first == 3 ? 255 : 128));
     for (std::size_t i = 0; i < known.size(); ++i) {
         if (known[i]) continue;
         for (int c = 0; c < count; ++c)
-            image.pixels[i * 4 + static_cast<std::size_t>(first + c)] =
-                static_cast<std::uint8_t>(n > 0 ? (sum[c] + n / 2) / n : (first == 3 ? 255 : 128));
+            image.pixels[i * 4 + static_cast<std::size_t>(first + c)] = fill[c];
     }
 }
 

@@ -37,18 +37,20 @@ struct EdgeSetup {
         valid = true;
     }
 
-    // Signed distance of `p` inside (> 0), and its barycentrics clamped to the triangle.
-    float depth(const glm::vec2& p, glm::vec3& bary) const {
-        float d[3];
+    // Signed distance of `p` inside (> 0), with the distances to the three edges in `d`.
+    float depth(const glm::vec2& p, float (&d)[3]) const {
         for (int e = 0; e < 3; ++e)
             d[e] = glm::dot(normal[e], p) + offset[e];
-        const float depthInside = std::min({d[0], d[1], d[2]});
-        bary = glm::max(glm::vec3(d[0] * weightScale[0], d[1] * weightScale[1],
-                                  d[2] * weightScale[2]),
-                        glm::vec3(0.0f));
-        const float sum = bary.x + bary.y + bary.z;
-        bary = sum > 0.0f ? bary / sum : glm::vec3(1.0f / 3.0f);
-        return depthInside;
+        return std::min({d[0], d[1], d[2]});
+    }
+
+    // The barycentrics of the point at edge distances `d`, clamped to the triangle.
+    glm::vec3 bary(const float (&d)[3]) const {
+        const glm::vec3 w =
+            glm::max(glm::vec3(d[0] * weightScale[0], d[1] * weightScale[1], d[2] * weightScale[2]),
+                     glm::vec3(0.0f));
+        const float sum = w.x + w.y + w.z;
+        return sum > 0.0f ? w / sum : glm::vec3(1.0f / 3.0f);
     }
 };
 
@@ -78,15 +80,15 @@ TexelCoverage rasterizeCharts(int width, int height, std::span<const glm::vec2> 
             const int y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y)));
             for (int y = y0; y <= y1; ++y) {
                 for (int x = x0; x <= x1; ++x) {
-                    glm::vec3 bary;
-                    const float d = edges.depth({x + 0.5f, y + 0.5f}, bary);
+                    float distances[3];
+                    const float d = edges.depth({x + 0.5f, y + 0.5f}, distances);
                     if (d < -reach) continue;
                     const std::size_t i = static_cast<std::size_t>(y) * width + x;
                     const auto ti = static_cast<std::int32_t>(t);
                     if (d > best[i] || (d == best[i] && ti < out.triangle[i])) {
                         best[i] = d;
                         out.triangle[i] = ti;
-                        out.bary[i] = bary;
+                        out.bary[i] = edges.bary(distances); // only for the texels it takes
                     }
                 }
             }

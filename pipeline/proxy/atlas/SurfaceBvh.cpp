@@ -63,6 +63,11 @@ SurfaceBvh::SurfaceBvh(std::span<const glm::vec3> positions, std::span<const std
     }
     nodes_.reserve(2 * (n / kLeafSize + 1));
     build(0, n, centroids, 0);
+    edges_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const glm::vec3 a = corner(order_[i], 0);
+        edges_[i] = Edges{a, corner(order_[i], 1) - a, corner(order_[i], 2) - a};
+    }
 }
 
 // Binned surface area heuristic (Wald 2007): 16 bins of the centroids along `axis`, the split
@@ -148,52 +153,21 @@ std::uint32_t SurfaceBvh::build(std::uint32_t begin, std::uint32_t end,
     nodes_[index].lo = lo;
     nodes_[index].hi = hi;
     const glm::vec3 extent = chi - clo;
-    if (end - begin <= kLeafSize || depth > 60 || std::max({extent.x, extent.y, extent.z}) <= 0.0f) {
+    if (end - begin <= kLeafSize || depth > 60 ||
+        std::max({extent.x, extent.y, extent.z}) <= 0.0f) {
         nodes_[index].first = begin;
         nodes_[index].count = end - begin;
         return index;
     }
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
     const std::uint32_t mid = sahSplit(begin, end, centroids, axis, clo[axis], extent[axis]);
     build(begin, mid, centroids, depth + 1);
     const std::uint32_t right = build(mid, end, centroids, depth + 1);
     nodes_[index].first = right;
     nodes_[index].count = 0;
     return index;
-}
-
-bool SurfaceBvh::segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin, float tMax,
-                    const glm::vec3& lo, const glm::vec3& hi) {
-    for (int a = 0; a < 3; ++a) {
-        float t0 = (lo[a] - o[a]) * invDir[a];
-        float t1 = (hi[a] - o[a]) * invDir[a];
-        if (t0 > t1) std::swap(t0, t1);
-        // NaN (0 * inf on a slab plane) leaves the bounds as they are.
-        if (t0 > tMin) tMin = t0;
-        if (t1 < tMax) tMax = t1;
-        if (tMin > tMax) return false;
-    }
-    return true;
-}
-
-bool SurfaceBvh::hitTriangle(std::uint32_t t, const glm::vec3& origin, const glm::vec3& dir,
-                             float tMin, float tMax, SegmentHit& hit) const {
-    // Moeller-Trumbore, both faces.
-    const glm::vec3 a = corner(t, 0), e1 = corner(t, 1) - a, e2 = corner(t, 2) - a;
-    const glm::vec3 pv = glm::cross(dir, e2);
-    const float det = glm::dot(e1, pv);
-    if (!(std::abs(det) > 1e-20f)) return false;
-    const float inv = 1.0f / det;
-    const glm::vec3 tv = origin - a;
-    const float u = glm::dot(tv, pv) * inv;
-    if (u < 0.0f || u > 1.0f) return false;
-    const glm::vec3 qv = glm::cross(tv, e1);
-    const float v = glm::dot(dir, qv) * inv;
-    if (v < 0.0f || u + v > 1.0f) return false;
-    const float hitT = glm::dot(e2, qv) * inv;
-    if (hitT < tMin || hitT > tMax) return false;
-    hit = SegmentHit{t, hitT, {u, v}};
-    return true;
 }
 
 ClosestPoint SurfaceBvh::closest(const glm::vec3& p, float maxDistanceSquared) const {

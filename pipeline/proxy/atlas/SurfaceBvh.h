@@ -13,6 +13,7 @@
 // triangle index).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -63,16 +64,59 @@ private:
                            float extent);
     glm::vec3 corner(std::uint32_t tri, int k) const { return positions_[indices_[3 * tri + k]]; }
 
-    static bool segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin,
-                               float tMax, const glm::vec3& lo, const glm::vec3& hi);
-    bool hitTriangle(std::uint32_t t, const glm::vec3& origin, const glm::vec3& dir, float tMin,
+    static bool segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin, float tMax,
+                               const Node& node);
+    bool hitTriangle(std::uint32_t i, const glm::vec3& origin, const glm::vec3& dir, float tMin,
                      float tMax, SegmentHit& hit) const;
+
+    // A triangle as the segment test reads it: first corner and the edges to the other two.
+    struct Edges {
+        glm::vec3 a, e1, e2;
+    };
 
     std::span<const glm::vec3> positions_;
     std::span<const std::uint32_t> indices_;
     std::vector<std::uint32_t> order_; // triangle ids, leaves reference ranges
+    std::vector<Edges> edges_;         // parallel to order_ (leaves read them in order)
     std::vector<Node> nodes_;
 };
+
+// Inline: forEachHit calls them per node and per leaf triangle.
+inline bool SurfaceBvh::segmentHitsBox(const glm::vec3& o, const glm::vec3& invDir, float tMin,
+                                       float tMax, const Node& node) {
+    // All three slabs, then one test: tMin only grows and tMax only shrinks, so the answer is
+    // the one of stopping at the first empty slab. NaN (0 * inf on a slab plane) never enters
+    // the bounds, as comparisons with NaN are false.
+    for (int a = 0; a < 3; ++a) {
+        const float t0 = (node.lo[a] - o[a]) * invDir[a];
+        const float t1 = (node.hi[a] - o[a]) * invDir[a];
+        const bool swapped = t0 > t1;
+        const float tNear = swapped ? t1 : t0, tFar = swapped ? t0 : t1;
+        tMin = tNear > tMin ? tNear : tMin;
+        tMax = tFar < tMax ? tFar : tMax;
+    }
+    return !(tMin > tMax);
+}
+
+inline bool SurfaceBvh::hitTriangle(std::uint32_t i, const glm::vec3& origin, const glm::vec3& dir,
+                                    float tMin, float tMax, SegmentHit& hit) const {
+    // Moeller-Trumbore, both faces.
+    const Edges& tri = edges_[i];
+    const glm::vec3 pv = glm::cross(dir, tri.e2);
+    const float det = glm::dot(tri.e1, pv);
+    if (!(std::abs(det) > 1e-20f)) return false;
+    const float inv = 1.0f / det;
+    const glm::vec3 tv = origin - tri.a;
+    const float u = glm::dot(tv, pv) * inv;
+    if (u < 0.0f || u > 1.0f) return false;
+    const glm::vec3 qv = glm::cross(tv, tri.e1);
+    const float v = glm::dot(dir, qv) * inv;
+    if (v < 0.0f || u + v > 1.0f) return false;
+    const float hitT = glm::dot(tri.e2, qv) * inv;
+    if (hitT < tMin || hitT > tMax) return false;
+    hit = SegmentHit{order_[i], hitT, {u, v}};
+    return true;
+}
 
 template <class Visit>
 void SurfaceBvh::forEachHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, float tMax,
@@ -85,7 +129,7 @@ void SurfaceBvh::forEachHit(const glm::vec3& origin, const glm::vec3& dir, float
     while (top > 0) {
         const std::uint32_t id = stack[--top];
         const Node& node = nodes_[id];
-        if (!segmentHitsBox(origin, invDir, tMin, tMax, node.lo, node.hi)) continue;
+        if (!segmentHitsBox(origin, invDir, tMin, tMax, node)) continue;
         if (node.count == 0) {
             if (top + 2 > 128) continue; // cannot happen at depth <= 60
             stack[top++] = node.first;
@@ -94,7 +138,7 @@ void SurfaceBvh::forEachHit(const glm::vec3& origin, const glm::vec3& dir, float
         }
         SegmentHit hit;
         for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-            if (hitTriangle(order_[i], origin, dir, tMin, tMax, hit)) visit(hit);
+            if (hitTriangle(i, origin, dir, tMin, tMax, hit)) visit(hit);
     }
 }
 
