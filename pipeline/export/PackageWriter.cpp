@@ -117,7 +117,7 @@ std::size_t assembleLayout(const Scene& scene, const ClusterTree& tree, const Ba
                            const BakeParams& bakeParams, const PackageOptions& options,
                            const PackageLayout& layout, const Placement& placement,
                            const PackageParts* parts, Sink& sink, const Progress& progress) {
-    TextureStore textures(scene);
+    TextureStore textures(scene, imageCacheFolder(bakeParams.cacheDir));
     ContentEncoder encoder(scene, bake, textures, options.compression);
     std::vector<std::string> uris;
     std::vector<EncodedContent> encoded;

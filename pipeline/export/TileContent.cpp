@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <tuple>
 
 #include <meshoptimizer.h>
@@ -72,18 +74,43 @@ const std::string& TextureStore::emissiveUriFor(Id material) {
 
 const std::string& TextureStore::pageUri(int page) {
     if (auto it = byPage_.find(page); it != byPage_.end()) return it->second;
-    EncodedImage image = encodePng(atlases_.pages()[static_cast<std::size_t>(page)]);
+    const RgbaImage& pixels = atlases_.pages()[static_cast<std::size_t>(page)];
+    ContentHash key = imageCacheKey("page png");
+    key.addValue(pixels.width);
+    key.addValue(pixels.height);
+    key.addVector(pixels.pixels);
+    std::optional<EncodedImage> cached = cache_.load(key.digest());
+    if (!cached || cached->mimeType != "image/png") {
+        cached = encodePng(pixels);
+        cache_.store(key.digest(), *cached);
+    }
+    EncodedImage image = std::move(*cached);
     std::string& uri = byPage_[page];
     uri = "textures/" + toHex(hashBytes(image.bytes.data(), image.bytes.size())) + ".png";
     files_[uri] = std::move(image.bytes);
     return uri;
 }
 
+std::optional<EncodedImage> TextureStore::loadCached(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                          std::istreambuf_iterator<char>());
+    // PNG and JPEG pass through (TextureImage.h): cheap; other formats are converted.
+    if (passesThroughForGltf(bytes) || !cache_.enabled()) return encodeForGltf(bytes);
+    ContentHash key = imageCacheKey("source texture");
+    key.addVector(bytes);
+    if (std::optional<EncodedImage> cached = cache_.load(key.digest())) return cached;
+    std::optional<EncodedImage> image = encodeForGltf(bytes);
+    if (image) cache_.store(key.digest(), *image);
+    return image;
+}
+
 std::string TextureStore::uriForFile(const std::filesystem::path& file) {
     if (file.empty()) return {};
     if (auto it = byFile_.find(file); it != byFile_.end()) return it->second;
     std::string& shared = byFile_[file];
-    std::optional<EncodedImage> image = loadTextureForGltf(file);
+    std::optional<EncodedImage> image = loadCached(file);
     if (!image) return shared; // mean colour fallback, see the header
     shared = "textures/" + toHex(hashBytes(image->bytes.data(), image->bytes.size())) +
              (image->mimeType == "image/jpeg" ? ".jpg" : ".png");

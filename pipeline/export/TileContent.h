@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/export/EncodedImageCache.h"
 #include "pipeline/export/PackageLayout.h"
 #include "pipeline/export/StackedAtlas.h"
 #include "pipeline/io/GlbWriter.h"
@@ -40,10 +41,13 @@
 namespace hlod {
 
 // The package's texture files, loaded on first use and named by content, and the pages
-// leaves' textures are stacked into (StackedAtlas.h), encoded as PNG on first use.
+// leaves' textures are stacked into (StackedAtlas.h), encoded as PNG on first use. With an
+// image cache folder (EncodedImageCache.h), pages and converted source textures are read from
+// it when an earlier export encoded the same pixels or source bytes: the same files either way.
 class TextureStore {
 public:
-    explicit TextureStore(const Scene& scene) : scene_(scene), atlases_(scene) {}
+    explicit TextureStore(const Scene& scene, std::filesystem::path imageCache = {})
+        : scene_(scene), atlases_(scene), cache_(std::move(imageCache)) {}
     const StackedAtlases& atlases() const { return atlases_; }
     // URI of a page of atlases() ("textures/<hash>.png").
     const std::string& pageUri(int page);
@@ -54,12 +58,17 @@ public:
     const std::string& emissiveUriFor(Id material);
     // Every texture used so far: URI relative to tiles/ -> bytes.
     const std::map<std::string, std::vector<std::uint8_t>>& files() const { return files_; }
+    // Images this store took from the image cache instead of encoding them.
+    std::size_t cachedImages() const { return cache_.hits(); }
 
 private:
     std::string uriForFile(const std::filesystem::path& file);
+    // The file as glTF carries it (loadTextureForGltf), converted ones from the cache.
+    std::optional<EncodedImage> loadCached(const std::filesystem::path& file);
 
     const Scene& scene_;
     StackedAtlases atlases_;
+    EncodedImageCache cache_;
     std::map<int, std::string> byPage_;
     std::map<Id, std::string> byMaterial_, emissiveByMaterial_;
     std::map<std::filesystem::path, std::string> byFile_;

@@ -105,7 +105,7 @@ public:
             toLocal_[id] = newId.empty() ? id : newId[id];
             if (toLocal_[id] != kNoId) toPlan_[toLocal_[id]] = id;
         }
-        textures_ = std::make_unique<TextureStore>(slice_);
+        textures_ = std::make_unique<TextureStore>(slice_, imageCacheFolder(cacheDir_));
         encoder_ = std::make_unique<ContentEncoder>(slice_, bake_, *textures_, compression);
     }
 

@@ -56,6 +56,10 @@ std::optional<std::vector<std::uint8_t>> pngWithoutMetadata(std::span<const std:
     return std::nullopt;
 }
 
+bool passesThroughForGltf(std::span<const std::uint8_t> bytes) {
+    return isPng(bytes) || isJpeg(bytes);
+}
+
 std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes) {
     if (bytes.empty() || bytes.size() > static_cast<std::size_t>(INT32_MAX)) return std::nullopt;
     const int size = static_cast<int>(bytes.size());

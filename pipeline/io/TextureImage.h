@@ -32,6 +32,10 @@ struct EncodedImage {
 
 std::optional<EncodedImage> encodeForGltf(std::span<const std::uint8_t> bytes);
 
+// Whether encodeForGltf passes these bytes through (PNG or JPEG by signature) rather than
+// decoding and re-encoding them.
+bool passesThroughForGltf(std::span<const std::uint8_t> bytes);
+
 // A PNG without its ancillary chunks but tRNS (see above); nullopt when the chunk structure is
 // broken (a length past the end, no IEND), which the caller then re-encodes.
 std::optional<std::vector<std::uint8_t>> pngWithoutMetadata(std::span<const std::uint8_t> png);
