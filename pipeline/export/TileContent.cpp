@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <tuple>
 
 #include <meshoptimizer.h>
@@ -72,19 +70,28 @@ const std::string& TextureStore::emissiveUriFor(Id material) {
     return uri;
 }
 
+template <class Key, class Encode>
+std::optional<EncodedImage> TextureStore::throughCache(Key&& key, Encode&& encode) {
+    if (!cache_.enabled()) return encode();
+    const std::uint64_t k = key();
+    if (std::optional<EncodedImage> cached = cache_.load(k)) return cached;
+    std::optional<EncodedImage> image = encode();
+    if (image) cache_.store(k, *image);
+    return image;
+}
+
 const std::string& TextureStore::pageUri(int page) {
     if (auto it = byPage_.find(page); it != byPage_.end()) return it->second;
     const RgbaImage& pixels = atlases_.pages()[static_cast<std::size_t>(page)];
-    ContentHash key = imageCacheKey("page png");
-    key.addValue(pixels.width);
-    key.addValue(pixels.height);
-    key.addVector(pixels.pixels);
-    std::optional<EncodedImage> cached = cache_.load(key.digest());
-    if (!cached || cached->mimeType != "image/png") {
-        cached = encodePng(pixels);
-        cache_.store(key.digest(), *cached);
-    }
-    EncodedImage image = std::move(*cached);
+    const auto key = [&] {
+        ContentHash h = imageCacheKey("page png");
+        h.addValue(pixels.width);
+        h.addValue(pixels.height);
+        h.addVector(pixels.pixels);
+        return h.digest();
+    };
+    EncodedImage image =
+        *throughCache(key, [&] { return std::optional<EncodedImage>(encodePng(pixels)); });
     std::string& uri = byPage_[page];
     uri = "textures/" + toHex(hashBytes(image.bytes.data(), image.bytes.size())) + ".png";
     files_[uri] = std::move(image.bytes);
@@ -92,18 +99,16 @@ const std::string& TextureStore::pageUri(int page) {
 }
 
 std::optional<EncodedImage> TextureStore::loadCached(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return std::nullopt;
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                          std::istreambuf_iterator<char>());
+    const std::optional<std::vector<std::uint8_t>> bytes = readImageFile(file);
+    if (!bytes) return std::nullopt;
     // PNG and JPEG pass through (TextureImage.h): cheap; other formats are converted.
-    if (passesThroughForGltf(bytes) || !cache_.enabled()) return encodeForGltf(bytes);
-    ContentHash key = imageCacheKey("source texture");
-    key.addVector(bytes);
-    if (std::optional<EncodedImage> cached = cache_.load(key.digest())) return cached;
-    std::optional<EncodedImage> image = encodeForGltf(bytes);
-    if (image) cache_.store(key.digest(), *image);
-    return image;
+    if (passesThroughForGltf(*bytes)) return encodeForGltf(*bytes);
+    const auto key = [&] {
+        ContentHash h = imageCacheKey("source texture");
+        h.addVector(*bytes);
+        return h.digest();
+    };
+    return throughCache(key, [&] { return encodeForGltf(*bytes); });
 }
 
 std::string TextureStore::uriForFile(const std::filesystem::path& file) {

@@ -65,6 +65,9 @@ private:
     std::string uriForFile(const std::filesystem::path& file);
     // The file as glTF carries it (loadTextureForGltf), converted ones from the cache.
     std::optional<EncodedImage> loadCached(const std::filesystem::path& file);
+    // encode()'s image, taken from the cache when it holds key() (hashed only with a cache).
+    template <class Key, class Encode>
+    std::optional<EncodedImage> throughCache(Key&& key, Encode&& encode);
 
     const Scene& scene_;
     StackedAtlases atlases_;

@@ -101,12 +101,16 @@ EncodedImage encodeJpeg(const RgbaImage& image, int quality) {
     return out;
 }
 
-std::optional<EncodedImage> loadTextureForGltf(const std::filesystem::path& file) {
+std::optional<std::vector<std::uint8_t>> readImageFile(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) return std::nullopt;
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                          std::istreambuf_iterator<char>());
-    return encodeForGltf(bytes);
+    return std::vector<std::uint8_t>((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+}
+
+std::optional<EncodedImage> loadTextureForGltf(const std::filesystem::path& file) {
+    const std::optional<std::vector<std::uint8_t>> bytes = readImageFile(file);
+    return bytes ? encodeForGltf(*bytes) : std::nullopt;
 }
 
 } // namespace hlod

@@ -45,6 +45,9 @@ std::optional<std::vector<std::uint8_t>> pngWithoutMetadata(std::span<const std:
 EncodedImage encodePng(const RgbaImage& image);
 EncodedImage encodeJpeg(const RgbaImage& image, int quality = 90);
 
+// The bytes of `file`; nullopt when it is missing or unreadable.
+std::optional<std::vector<std::uint8_t>> readImageFile(const std::filesystem::path& file);
+
 // Reads `file` and encodes it as above; nullopt when missing, unreadable or undecodable.
 std::optional<EncodedImage> loadTextureForGltf(const std::filesystem::path& file);
 
